@@ -1,0 +1,183 @@
+// PCCD/Point_cloud.h -- an immutable point cloud: flat coordinate store, bounding box, kd-tree,
+// nearest-neighbour and radius queries, and the mean spacing. The first stage of every PCCD pipeline
+// (DESIGN.md); the graphs, the sampling radius and the surface all read the cloud through it.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <iterator>
+#include <limits>
+#include <memory>
+#include <ranges>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <PCCD/Eigen_kernel.h>
+#include <PCCD/Error.h>
+#include <PCCD/Identity_point_map.h>
+#include <PCCD/Kd_tree.h>
+#include <PCCD/Point_traits.h>
+#include <PCCD/concepts/PointCloudKernel.h>
+#include <PCCD/concepts/ReadablePointMap.h>
+
+namespace PCCD {
+
+/// An immutable cloud of N >= 1 points with finite coordinates, and its kd-tree.
+///
+/// \tparam K a model of PointCloudKernel; its `FT` is the coordinate type of the flat store.
+///
+/// Copies are cheap and share the (immutable) data. Thread safety: every member function is const
+/// and safe to call concurrently from several threads.
+template <PointCloudKernel K = Eigen_kernel<double>>
+class Point_cloud {
+public:
+    using Kernel = K;
+    using FT = typename K::FT;
+    using Point_3 = typename K::Point_3;
+    using Vector_3 = Eigen::Matrix<FT, 3, 1>;
+    using Coordinates = Eigen::Matrix<FT, 3, Eigen::Dynamic>;
+    using Bbox_3 = Eigen::AlignedBox<FT, 3>;
+    using Index = std::uint32_t;
+    using Neighbor = PCCD::Neighbor<FT>;
+
+    /// \name Construction
+    /// @{
+
+    /// Copies the points of `items` through `point_map`.
+    /// \tparam Range an input range of items.
+    /// \tparam PointMap a model of ReadablePointMap for the range's items (identity by default).
+    /// \throws Invalid_input if the range is empty or a coordinate is NaN or infinite (the message
+    ///         names the first such point), or if it holds 2^32 - 1 points or more.
+    /// Complexity: O(N log N) (kd-tree construction).
+    template <std::ranges::input_range Range,
+              class PointMap = Identity_point_map<std::ranges::range_value_t<Range>>>
+        requires ReadablePointMap<PointMap, std::ranges::range_value_t<Range>>
+    explicit Point_cloud(const Range& items, const PointMap& point_map = PointMap(), const K& kernel = K())
+        : Point_cloud(to_coordinates(items, point_map), kernel)
+    {
+    }
+
+    /// Takes a 3 x N matrix of coordinates, one point per column.
+    /// \throws Invalid_input as above.
+    explicit Point_cloud(Coordinates coordinates, const K& kernel = K())
+        : m_data(std::make_shared<const Data>(checked(std::move(coordinates)), kernel))
+    {
+    }
+    /// @}
+
+    /// \name Access
+    /// @{
+    std::size_t size() const { return m_data->tree.size(); }
+    /// The 3 x N coordinate store.
+    const Coordinates& coordinates() const { return m_data->tree.coordinates(); }
+    /// The coordinates of point `i` as an Eigen vector. \pre i < size()
+    Vector_3 position(Index i) const
+    {
+        PCCD_debug_precondition(i < size());
+        return coordinates().col(Eigen::Index(i));
+    }
+    /// Point `i` as a kernel point. \pre i < size()
+    Point_3 point(Index i) const
+    {
+        const Vector_3 p = position(i);
+        return m_data->kernel.construct_point_3_object()(p.x(), p.y(), p.z());
+    }
+    const Kernel& kernel() const { return m_data->kernel; }
+    /// The axis-aligned bounding box of all points.
+    const Bbox_3& bbox() const { return m_data->bbox; }
+    /// The kd-tree over the points.
+    const Kd_tree<FT>& kd_tree() const { return m_data->tree; }
+    /// @}
+
+    /// \name Queries (exact; results sorted by squared distance, then index)
+    /// @{
+
+    /// The `k` nearest cloud points to `query` (all of them if k >= size()). O(k log N) expected.
+    void k_nearest(const Vector_3& query, std::size_t k, std::vector<Neighbor>& out) const
+    {
+        m_data->tree.k_nearest(query, k, out);
+    }
+    std::vector<Neighbor> k_nearest(const Vector_3& query, std::size_t k) const
+    {
+        return m_data->tree.k_nearest(query, k);
+    }
+    /// The cloud point nearest to `query` (smallest index among equally near ones).
+    Neighbor nearest(const Vector_3& query) const { return m_data->tree.nearest(query); }
+    /// All cloud points at distance <= `radius` from `query`. \pre radius >= 0
+    void within_radius(const Vector_3& query, FT radius, std::vector<Neighbor>& out) const
+    {
+        m_data->tree.within_radius(query, radius, out);
+    }
+    std::vector<Neighbor> within_radius(const Vector_3& query, FT radius) const
+    {
+        return m_data->tree.within_radius(query, radius);
+    }
+    /// @}
+
+    /// Mean over all points of the distance to the nearest *other* point of the cloud (a duplicate
+    /// counts, at distance 0). For N points sampled uniformly at random from a surface of area A it
+    /// is close to 0.5 * sqrt(A / N). Computed on every call: O(N log N).
+    /// \throws Invalid_input if the cloud has a single point.
+    double mean_spacing() const
+    {
+        if (size() < 2) throw Invalid_input("mean spacing needs at least two points, the cloud has one");
+        std::vector<Neighbor> nn;
+        double sum = 0.0;
+        for (Index i = 0; i < Index(size()); ++i) {
+            k_nearest(position(i), 2, nn);
+            // The point itself is among the two nearest; the other entry is its nearest neighbour.
+            const Neighbor& other = (nn[0].index == i) ? nn[1] : nn[0];
+            sum += std::sqrt(double(other.squared_distance));
+        }
+        return sum / double(size());
+    }
+
+private:
+    struct Data {
+        Kd_tree<FT> tree;
+        Bbox_3 bbox;
+        K kernel;
+        Data(Coordinates c, const K& k) : tree(std::move(c)), bbox(compute_bbox(tree.coordinates())), kernel(k) {}
+    };
+
+    static Bbox_3 compute_bbox(const Coordinates& c)
+    {
+        return Bbox_3(Vector_3(c.rowwise().minCoeff()), Vector_3(c.rowwise().maxCoeff()));
+    }
+
+    template <class Range, class PointMap>
+    static Coordinates to_coordinates(const Range& items, const PointMap& point_map)
+    {
+        std::vector<FT> flat;
+        if constexpr (std::ranges::sized_range<Range>) flat.reserve(3 * std::ranges::size(items));
+        for (const auto& item : items) {
+            const auto& p = get(point_map, item);
+            using P = std::remove_cvref_t<decltype(p)>;
+            flat.push_back(static_cast<FT>(Point_traits<P>::x(p)));
+            flat.push_back(static_cast<FT>(Point_traits<P>::y(p)));
+            flat.push_back(static_cast<FT>(Point_traits<P>::z(p)));
+        }
+        return Eigen::Map<const Coordinates>(flat.data(), 3, Eigen::Index(flat.size() / 3));
+    }
+
+    static Coordinates checked(Coordinates c)
+    {
+        if (c.cols() == 0) throw Invalid_input("point cloud is empty");
+        if (std::uint64_t(c.cols()) >= std::uint64_t(std::numeric_limits<Index>::max()))
+            throw Invalid_input(internal::concat("point cloud has ", c.cols(), " points; at most 2^32 - 2 are supported"));
+        if (!c.allFinite()) {
+            for (Eigen::Index i = 0; i < c.cols(); ++i)
+                if (!c.col(i).allFinite())
+                    throw Invalid_input(internal::concat("point ", i, " has a non-finite coordinate (", c(0, i), ", ",
+                                                         c(1, i), ", ", c(2, i), ")"));
+        }
+        return c;
+    }
+
+    std::shared_ptr<const Data> m_data;
+};
+
+} // namespace PCCD

@@ -1,0 +1,45 @@
+// PCCD/concepts/ProximityGraph.h -- concept of the graphs PCCD walks for geodesic distances and
+// shortest paths (ALGORITHMS.md section 2): Boost.Graph models with an edge weight map.
+#pragma once
+
+#include <concepts>
+#include <cstddef>
+#include <type_traits>
+
+#include <boost/graph/graph_concepts.hpp>
+#include <boost/graph/graph_traits.hpp>
+
+namespace PCCD {
+
+/// \concept ProximityGraph
+/// A Boost.Graph model over the points of a cloud (vertex `i` is point `i`) with edge lengths.
+///
+/// Requirements, for `const G& g`, a vertex `v`, an edge `e` and `const WeightMap& w`:
+/// - `boost::graph_traits<G>::traversal_category` converts to both
+///   `boost::vertex_list_graph_tag` and `boost::incidence_graph_tag`;
+/// - the vertex descriptor is an integral type (vertex `i` is point `i`);
+/// - `num_vertices(g)`, `vertices(g)`, `out_edges(v, g)`, `out_degree(v, g)`, `source(e, g)`,
+///   `target(e, g)` as in BGL's VertexListGraph and IncidenceGraph concepts;
+/// - `get(w, e)` returns the edge's length, convertible to double (a readable property map).
+///
+/// Models: boost::compressed_sparse_row_graph<boost::directedS, ...> (PCCD's default storage) and
+/// boost::adjacency_list<vecS, vecS, ...>, each with its weight map.
+template <class G, class WeightMap>
+concept ProximityGraph =
+    requires(const G& g, typename boost::graph_traits<G>::vertex_descriptor v,
+             typename boost::graph_traits<G>::edge_descriptor e, const WeightMap& w) {
+        requires std::is_convertible_v<typename boost::graph_traits<G>::traversal_category,
+                                       boost::vertex_list_graph_tag>;
+        requires std::is_convertible_v<typename boost::graph_traits<G>::traversal_category,
+                                       boost::incidence_graph_tag>;
+        requires std::integral<typename boost::graph_traits<G>::vertex_descriptor>;
+        { num_vertices(g) } -> std::convertible_to<std::size_t>;
+        vertices(g);
+        out_edges(v, g);
+        { out_degree(v, g) } -> std::convertible_to<std::size_t>;
+        { source(e, g) } -> std::convertible_to<typename boost::graph_traits<G>::vertex_descriptor>;
+        { target(e, g) } -> std::convertible_to<typename boost::graph_traits<G>::vertex_descriptor>;
+        { get(w, e) } -> std::convertible_to<double>;
+    };
+
+} // namespace PCCD
