@@ -1,0 +1,12 @@
+// tools/commands.h -- the subcommands of the pccd tool. Each register_* function adds one CLI11
+// subcommand to the app; its implementation lives in tools/command_<name>.cpp.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace pccd_tool {
+
+void register_info(CLI::App& app);           // pccd info FILE [--json]
+void register_demo(CLI::App& app);           // pccd demo
+
+} // namespace pccd_tool
