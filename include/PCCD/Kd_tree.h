@@ -30,6 +30,76 @@ struct Neighbor {
     friend bool operator==(const Neighbor&, const Neighbor&) = default;
 };
 
+namespace internal {
+
+template <class FT>
+bool neighbor_less(const Neighbor<FT>& a, const Neighbor<FT>& b)
+{
+    return a.squared_distance < b.squared_distance ||
+           (a.squared_distance == b.squared_distance && a.index < b.index);
+}
+
+// A bound slightly above d2. nanoflann offers a point only when its distance is strictly below
+// worstDist(), and prunes a subtree when an incrementally computed (rounded) lower bound exceeds
+// worstDist(); a relative slack of a few ulps makes sure that points tied with the bound are still
+// offered. The result sets then decide exactly.
+template <class FT>
+FT with_slack(FT d2)
+{
+    return d2 + d2 * (16 * std::numeric_limits<FT>::epsilon()) + std::numeric_limits<FT>::min();
+}
+
+// nanoflann result set keeping the k smallest (squared distance, index) pairs in lexicographic
+// order: points tied with the k-th distance are offered too (with_slack) and win by index.
+template <class FT>
+class Knn_result_set {
+public:
+    Knn_result_set(Neighbor<FT>* data, std::size_t capacity) : m_data(data), m_capacity(capacity) {}
+    std::size_t size() const { return m_count; }
+    bool full() const { return m_count == m_capacity; }
+    FT worstDist() const
+    {
+        return full() ? with_slack(m_data[m_count - 1].squared_distance) : std::numeric_limits<FT>::infinity();
+    }
+    template <class Index>
+    bool addPoint(FT d2, Index index)
+    {
+        const Neighbor<FT> candidate{static_cast<std::uint32_t>(index), d2};
+        if (full() && !neighbor_less(candidate, m_data[m_count - 1])) return true;
+        std::size_t i = full() ? m_count - 1 : m_count++;
+        for (; i > 0 && neighbor_less(candidate, m_data[i - 1]); --i) m_data[i] = m_data[i - 1];
+        m_data[i] = candidate;
+        return true;
+    }
+
+private:
+    Neighbor<FT>* m_data;
+    std::size_t m_capacity;
+    std::size_t m_count = 0;
+};
+
+// nanoflann result set collecting every point with squared distance <= bound (unsorted).
+template <class FT>
+class Radius_result_set {
+public:
+    Radius_result_set(std::vector<Neighbor<FT>>& out, FT bound) : m_out(out), m_bound(bound) {}
+    std::size_t size() const { return m_out.size(); }
+    bool full() const { return true; }
+    FT worstDist() const { return with_slack(m_bound); }
+    template <class Index>
+    bool addPoint(FT d2, Index index)
+    {
+        if (d2 <= m_bound) m_out.push_back(Neighbor<FT>{static_cast<std::uint32_t>(index), d2});
+        return true;
+    }
+
+private:
+    std::vector<Neighbor<FT>>& m_out;
+    FT m_bound;
+};
+
+} // namespace internal
+
 /// Exact kd-tree over the columns of a 3 x N matrix.
 /// \tparam FT float or double.
 /// The tree keeps its own copy of the coordinates. Queries are const and safe for concurrent readers.
@@ -56,28 +126,16 @@ public:
 
     /// The `k` nearest points to `query` (fewer if the tree holds fewer), sorted by
     /// (squared distance, index), written into `out` (cleared first). O(k log N) expected.
+    /// Among points at the same distance the smaller indices win, so the answer is unique.
     void k_nearest(const Vector_3& query, std::size_t k, std::vector<Result>& out) const
     {
         out.clear();
-        if (size() == 0 || k == 0) return;
         k = std::min(k, size());
-        // Ask for one more so that a tie at the k-th place can be broken by index.
-        std::size_t asked = std::min(k + 1, size());
-        std::vector<Index> indices(asked);
-        std::vector<FT> distances(asked);
-        for (;;) {
-            const std::size_t found =
-                m_impl->index.knnSearch(query.data(), asked, indices.data(), distances.data());
-            out.resize(found);
-            for (std::size_t i = 0; i < found; ++i) out[i] = Result{indices[i], distances[i]};
-            sort_results(out);
-            // A tie across the cut: make sure every point at the k-th distance is seen, then cut.
-            if (found <= k || out.back().squared_distance > out[k - 1].squared_distance || asked == size()) break;
-            asked = std::min(2 * asked, size());
-            indices.resize(asked);
-            distances.resize(asked);
-        }
-        if (out.size() > k) out.resize(k);
+        if (k == 0) return;
+        out.resize(k);
+        internal::Knn_result_set<FT> results(out.data(), k);
+        m_impl->index.findNeighbors(results, query.data(), nanoflann::SearchParams());
+        out.resize(results.size());
     }
 
     /// Convenience overload returning a new vector.
@@ -97,25 +155,16 @@ public:
         return out.front();
     }
 
-    /// All points within distance `radius` of `query` (distance <= radius), sorted by
+    /// All points within distance `radius` of `query` (squared distance <= radius^2), sorted by
     /// (squared distance, index), written into `out` (cleared first).
     void within_radius(const Vector_3& query, FT radius, std::vector<Result>& out) const
     {
         PCCD_precondition_msg(radius >= FT(0), "radius query with a negative radius");
         out.clear();
         if (size() == 0) return;
-        std::vector<std::pair<Index, FT>> matches;
-        nanoflann::SearchParams params;
-        params.sorted = false;
-        // nanoflann keeps points with squared distance < bound; nudge the bound up by one ulp so
-        // points exactly on the sphere are included, then filter exactly.
-        const FT bound = radius * radius;
-        m_impl->index.radiusSearch(query.data(), std::nextafter(bound, std::numeric_limits<FT>::max()), matches,
-                                   params);
-        out.reserve(matches.size());
-        for (const auto& [index, d2] : matches)
-            if (d2 <= bound) out.push_back(Result{index, d2});
-        sort_results(out);
+        internal::Radius_result_set<FT> results(out, radius * radius);
+        m_impl->index.findNeighbors(results, query.data(), nanoflann::SearchParams());
+        std::sort(out.begin(), out.end(), internal::neighbor_less<FT>);
     }
 
     /// Convenience overload returning a new vector.
@@ -155,14 +204,6 @@ private:
             if (coords.cols() > 0) index.buildIndex();
         }
     };
-
-    static void sort_results(std::vector<Result>& results)
-    {
-        std::sort(results.begin(), results.end(), [](const Result& a, const Result& b) {
-            return a.squared_distance < b.squared_distance ||
-                   (a.squared_distance == b.squared_distance && a.index < b.index);
-        });
-    }
 
     std::unique_ptr<Impl> m_impl;
 };

@@ -1,0 +1,225 @@
+// PCCD/Rigid_transform_3.h -- a validated rigid motion x -> R x + t (R a proper rotation), the pose
+// type taken by the collision queries and produced by the benchmark pose generator
+// (ALGORITHMS.md section 8: T_A = [R_A | 0], T_B = [R_B | (d, 0, 0)]).
+//
+// Every constructor checks that its input really is rigid: a scaling, shear, reflection or a NaN /
+// infinite entry throws PCCD::Invalid_input naming the problem. An accepted rotation is replaced by
+// its nearest rotation matrix (the orthogonal polar factor), so inverse() == transpose is exact to
+// rounding and long compositions stay rigid. CGAL's Aff_transformation_3 (and any type exposing
+// `m(i, j)`) converts without this header including CGAL.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <concepts>
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+
+#include <Eigen/Core>
+#include <Eigen/SVD>
+
+#include <PCCD/Error.h>
+
+namespace PCCD {
+namespace internal {
+
+/// Concept helper: a number that converts to `FT` directly, or through an ADL-found `to_double`
+/// (CGAL's exact number types such as Lazy_exact_nt, Gmpq).
+template <class N, class FT>
+concept Convertible_number = std::convertible_to<N, FT> || requires(const N& n) {
+    { to_double(n) } -> std::convertible_to<double>;
+};
+
+/// Concept helper: an affine transformation in CGAL's style, whose matrix entries `t.m(i, j)`
+/// (row i in 0..2, column j in 0..3, column 3 the translation) convert to `FT`.
+template <class T, class FT>
+concept Affine_matrix_entries = requires(const T& t, int i, int j) {
+    { t.m(i, j) } -> Convertible_number<FT>;
+};
+
+template <class FT, class N>
+FT to_floating_point(const N& value)
+{
+    if constexpr (std::convertible_to<N, FT>)
+        return static_cast<FT>(value);
+    else
+        return static_cast<FT>(to_double(value));
+}
+
+} // namespace internal
+
+/// A rigid motion of 3-space, x -> R x + t, with R a proper rotation (R^T R = I, det R = +1).
+///
+/// \tparam FT_ `float` or `double`.
+///
+/// Validation: the rotation part is accepted when every entry of R^T R - I is at most `tolerance`
+/// in absolute value (default `default_tolerance`) and det R > 0; it is then stored as its nearest
+/// rotation matrix (orthogonal polar factor U V^T of the SVD R = U S V^T), which differs from the
+/// input by at most about `tolerance`. Otherwise the constructor throws Invalid_input saying whether
+/// the matrix scales, shears or reflects, or which entry is NaN or infinite.
+///
+/// Immutable value type; all member functions are const and safe to call concurrently.
+template <std::floating_point FT_ = double>
+class Rigid_transform_3 {
+public:
+    using FT = FT_;
+    using Matrix_3 = Eigen::Matrix<FT, 3, 3>;
+    using Vector_3 = Eigen::Matrix<FT, 3, 1>;
+    using Matrix_3x4 = Eigen::Matrix<FT, 3, 4>;
+    using Coordinates = Eigen::Matrix<FT, 3, Eigen::Dynamic>;
+
+    /// Default tolerance on the entries of R^T R - I: 1e-6 for double (a rotation written with
+    /// 7 significant digits passes), 100 machine epsilons (about 1.2e-5) for float.
+    static constexpr FT default_tolerance = std::max(FT(1e-6), FT(100) * std::numeric_limits<FT>::epsilon());
+
+    /// \name Construction
+    /// @{
+
+    /// The identity.
+    Rigid_transform_3() : m_rotation(Matrix_3::Identity()), m_translation(Vector_3::Zero()) {}
+
+    /// From a rotation matrix and a translation vector (any Eigen expressions, any scalar type).
+    /// \throws Invalid_input if `rotation` is not 3 x 3 or `translation` not 3 x 1, if an entry is
+    ///         NaN or infinite, if `rotation` is not a proper rotation within `tolerance` (scaling,
+    ///         shear, reflection), or if `tolerance` is not in [0, 0.5).
+    /// Complexity: O(1) (one 3 x 3 SVD).
+    template <class Rotation, class Translation>
+    Rigid_transform_3(const Eigen::MatrixBase<Rotation>& rotation, const Eigen::MatrixBase<Translation>& translation,
+                      FT tolerance = default_tolerance)
+    {
+        if (rotation.rows() != 3 || rotation.cols() != 3)
+            throw Invalid_input(internal::concat("rigid transform: the rotation is ", rotation.rows(), " x ",
+                                                 rotation.cols(), ", not 3 x 3"));
+        if (translation.rows() != 3 || translation.cols() != 1)
+            throw Invalid_input(internal::concat("rigid transform: the translation is ", translation.rows(), " x ",
+                                                 translation.cols(), ", not 3 x 1"));
+        Matrix_3x4 m;
+        m.template leftCols<3>() = rotation.template cast<FT>();
+        m.col(3) = translation.template cast<FT>();
+        set_checked(m, tolerance);
+    }
+
+    /// From the 3 x 4 matrix [R | t] given row by row: {r00, r01, r02, t0, r10, ..., t2}.
+    /// \throws Invalid_input as the constructor from Eigen matrices.
+    explicit Rigid_transform_3(const std::array<FT, 12>& row_major_3x4, FT tolerance = default_tolerance)
+    {
+        set_checked(Eigen::Map<const Eigen::Matrix<FT, 3, 4, Eigen::RowMajor>>(row_major_3x4.data()), tolerance);
+    }
+
+    /// From an affine transformation exposing `m(i, j)` for rows 0..2 and columns 0..3 (column 3 is
+    /// the translation), such as CGAL::Aff_transformation_3<K> for any kernel K; exact number types
+    /// are converted with their `to_double`. The homogeneous last row is not read.
+    /// \throws Invalid_input as the constructor from Eigen matrices.
+    template <class Affine_transformation>
+        requires internal::Affine_matrix_entries<Affine_transformation, FT_>
+    explicit Rigid_transform_3(const Affine_transformation& transformation, FT tolerance = default_tolerance)
+    {
+        Matrix_3x4 m;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 4; ++j) m(i, j) = internal::to_floating_point<FT>(transformation.m(i, j));
+        set_checked(m, tolerance);
+    }
+
+    /// The identity.
+    static Rigid_transform_3 identity() { return Rigid_transform_3(); }
+    /// @}
+
+    /// \name Access
+    /// @{
+    /// The rotation R (orthonormal to rounding, det +1).
+    const Matrix_3& rotation() const { return m_rotation; }
+    /// The translation t.
+    const Vector_3& translation() const { return m_translation; }
+    /// The 3 x 4 matrix [R | t].
+    Matrix_3x4 matrix() const
+    {
+        Matrix_3x4 m;
+        m << m_rotation, m_translation;
+        return m;
+    }
+    /// @}
+
+    /// \name Application (O(1) per point)
+    /// @{
+    /// R p + t.
+    template <class Derived>
+    Vector_3 transform_point(const Eigen::MatrixBase<Derived>& p) const
+    {
+        return m_rotation * p.template cast<FT>() + m_translation;
+    }
+    /// R v (directions and normals: a rigid motion needs no inverse transpose).
+    template <class Derived>
+    Vector_3 transform_vector(const Eigen::MatrixBase<Derived>& v) const
+    {
+        return m_rotation * v.template cast<FT>();
+    }
+    /// R p + t for every column p of a 3 x N matrix. O(N).
+    template <class Derived>
+    Coordinates transform_points(const Eigen::MatrixBase<Derived>& points) const
+    {
+        return (m_rotation * points.template cast<FT>()).colwise() + m_translation;
+    }
+    /// @}
+
+    /// \name Group operations
+    /// @{
+    /// The composition `a * b`: first `b`, then `a` (x -> a(b(x))).
+    friend Rigid_transform_3 operator*(const Rigid_transform_3& a, const Rigid_transform_3& b)
+    {
+        return Rigid_transform_3(a.m_rotation * b.m_rotation, a.m_rotation * b.m_translation + a.m_translation,
+                                 Unchecked{});
+    }
+    /// The inverse motion x -> R^T (x - t).
+    Rigid_transform_3 inverse() const
+    {
+        const Matrix_3 rt = m_rotation.transpose();
+        return Rigid_transform_3(rt, -(rt * m_translation), Unchecked{});
+    }
+    /// @}
+
+private:
+    struct Unchecked {};
+    Rigid_transform_3(const Matrix_3& rotation, const Vector_3& translation, Unchecked)
+        : m_rotation(rotation), m_translation(translation)
+    {
+    }
+
+    template <class Derived>
+    void set_checked(const Eigen::MatrixBase<Derived>& m, FT tolerance)
+    {
+        if (!(tolerance >= FT(0) && tolerance < FT(0.5)))
+            throw Invalid_input(internal::concat("rigid transform: tolerance ", tolerance, " is not in [0, 0.5)"));
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 4; ++j)
+                if (!std::isfinite(m(i, j)))
+                    throw Invalid_input(internal::concat("rigid transform: ", j < 3 ? "rotation" : "translation",
+                                                         " entry (", i, ", ", j, ") is ", m(i, j)));
+        const Matrix_3 r = m.template leftCols<3>();
+        const Matrix_3 gram = r.transpose() * r;
+        for (int i = 0; i < 3; ++i)
+            for (int j = i + 1; j < 3; ++j)
+                if (std::abs(gram(i, j)) > tolerance)
+                    throw Invalid_input(internal::concat("rigid transform: the rotation part shears: columns ", i,
+                                                         " and ", j, " have dot product ", gram(i, j),
+                                                         " (tolerance ", tolerance, ")"));
+        for (int i = 0; i < 3; ++i)
+            if (std::abs(gram(i, i) - FT(1)) > tolerance)
+                throw Invalid_input(internal::concat("rigid transform: the rotation part scales: column ", i,
+                                                     " has length ", std::sqrt(gram(i, i)), ", not 1 (tolerance ",
+                                                     tolerance, " on its square)"));
+        const FT det = r.determinant();
+        if (det < FT(0))
+            throw Invalid_input(internal::concat("rigid transform: the rotation part is a reflection (determinant ",
+                                                 det, ")"));
+        const Eigen::JacobiSVD<Matrix_3> svd(r, Eigen::ComputeFullU | Eigen::ComputeFullV);
+        m_rotation = svd.matrixU() * svd.matrixV().transpose();
+        m_translation = m.col(3);
+    }
+
+    Matrix_3 m_rotation;
+    Vector_3 m_translation;
+};
+
+} // namespace PCCD
