@@ -53,16 +53,12 @@ public:
     /// line) the outer equator point (v = 0) is used.
     Eigen::Vector3d closest_point(const Eigen::Vector3d& x) const
     {
-        return core_point(x) + m_minor * normal(x);
+        const Meridian_frame f = frame(x);
+        return m_centre + m_major * f.radial + m_minor * f.normal;
     }
 
     /// The outward unit normal at closest_point(x) (same conventions).
-    Eigen::Vector3d normal(const Eigen::Vector3d& x) const
-    {
-        const Eigen::Vector3d d = x - core_point(x);
-        const double length = d.norm();
-        return length > 0.0 ? Eigen::Vector3d(d / length) : radial_direction(x);
-    }
+    Eigen::Vector3d normal(const Eigen::Vector3d& x) const { return frame(x).normal; }
 
     /// 4 pi^2 R r.
     double area() const { return 4.0 * std::numbers::pi * std::numbers::pi * m_major * m_minor; }
@@ -90,16 +86,23 @@ public:
     }
 
 private:
-    // Unit vector from the axis towards x in the plane z = const (+x on the axis).
-    Eigen::Vector3d radial_direction(const Eigen::Vector3d& x) const
+    struct Meridian_frame {
+        Eigen::Vector3d radial; // unit vector from the axis towards x, horizontal
+        Eigen::Vector3d normal; // unit vector from the core circle towards x, in the meridian plane
+    };
+
+    // Computed from the in-plane coordinates (rho - R, z), so that the normal lies exactly in the
+    // meridian plane even when x is within rounding of the core circle.
+    Meridian_frame frame(const Eigen::Vector3d& x) const
     {
         const Eigen::Vector3d d = x - m_centre;
         const double rho = std::hypot(d.x(), d.y());
-        return rho > 0.0 ? Eigen::Vector3d(d.x() / rho, d.y() / rho, 0.0) : Eigen::Vector3d::UnitX();
+        const Eigen::Vector3d radial =
+            rho > 0.0 ? Eigen::Vector3d(d.x() / rho, d.y() / rho, 0.0) : Eigen::Vector3d::UnitX();
+        const double a = rho - m_major, b = d.z(), length = std::hypot(a, b);
+        if (!(length > 0.0)) return {radial, radial};
+        return {radial, Eigen::Vector3d((a / length) * radial + (b / length) * Eigen::Vector3d::UnitZ())};
     }
-
-    // The point of the core circle (radius R, in the plane z = centre.z) nearest to x.
-    Eigen::Vector3d core_point(const Eigen::Vector3d& x) const { return m_centre + m_major * radial_direction(x); }
 
     double m_major;
     double m_minor;

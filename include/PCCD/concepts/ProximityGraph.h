@@ -22,7 +22,12 @@ namespace PCCD {
 ///   `target(e, g)` as in BGL's VertexListGraph and IncidenceGraph concepts;
 /// - `get(w, e)` returns the edge's length, convertible to double (a readable property map).
 ///
-/// Models: boost::compressed_sparse_row_graph<boost::directedS, ...> (PCCD's default storage) and
+/// Edges are undirected: a directed model must store both directions of every edge with the same
+/// length (as PCCD::Proximity_graph::Graph does), an undirectedS model stores each edge once. Lengths
+/// are >= 0 and, for the A* of Paths_on_the_fly, not shorter than the Euclidean distance of the ends.
+///
+/// Models: boost::compressed_sparse_row_graph<boost::directedS, ...> (PCCD's default storage,
+/// PCCD::Proximity_graph::Graph with Proximity_graph::Length_map) and
 /// boost::adjacency_list<vecS, vecS, ...>, each with its weight map.
 template <class G, class WeightMap>
 concept ProximityGraph =
@@ -41,5 +46,20 @@ concept ProximityGraph =
         { target(e, g) } -> std::convertible_to<typename boost::graph_traits<G>::vertex_descriptor>;
         { get(w, e) } -> std::convertible_to<double>;
     };
+
+/// \concept EdgeFlagMap
+/// A readable property map from the edges of graph `G` to a flag, used for the "virtual" mark of
+/// long edges (ALGORITHMS.md section 2).
+///
+/// Requirement, for `const M& m` and an edge `e` of `G`: `get(m, e)` is convertible to bool.
+///
+/// Models: the bundled-member map `get(&Proximity_edge::is_virtual, g)` of PCCD's default graph,
+/// PCCD::No_virtual_edges (every edge is real; the default for user graphs), and any Boost
+/// property map over edges with a bool value (e.g. an adjacency_list's bundled or interior bool
+/// property).
+template <class M, class G>
+concept EdgeFlagMap = requires(const M& m, typename boost::graph_traits<G>::edge_descriptor e) {
+    { get(m, e) } -> std::convertible_to<bool>;
+};
 
 } // namespace PCCD

@@ -1,0 +1,23 @@
+// PCCD/IO/Triangle_mesh_data.h -- the plain data a mesh file holds: vertices and triangles as
+// index triples. Filled by PCCD::IO::read_triangle_mesh and written by write_triangle_mesh.
+// This header does not include CGAL.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace PCCD {
+
+/// A triangle soup: vertices and triangles given by three 0-based indices into `vertices`.
+struct Triangle_mesh_data {
+    /// The vertices, in file order.
+    std::vector<Eigen::Vector3d> vertices;
+    /// The triangles, each a triple of indices into `vertices`. Polygons of the file with more than
+    /// three vertices appear here as fans (see read_triangle_mesh).
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+};
+
+} // namespace PCCD

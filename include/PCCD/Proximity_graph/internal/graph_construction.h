@@ -1,0 +1,199 @@
+// PCCD/Proximity_graph/internal/graph_construction.h -- the machinery shared by knn_graph() and
+// sphere_of_influence_graph() (ALGORITHMS.md section 2): grouping coincident points, a kd-tree over
+// the distinct positions, and the assembly of a symmetric CSR graph from a list of undirected edges.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <numeric>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include <PCCD/Error.h>
+#include <PCCD/Kd_tree.h>
+#include <PCCD/Point_cloud.h>
+#include <PCCD/Proximity_graph/Proximity_graph.h>
+#include <PCCD/internal/parallel.h>
+
+namespace PCCD::internal {
+
+/// Euclidean distance between columns `a` and `b`, in double. The graph builders and their tests
+/// use this one formula so that edge tests agree to the last bit.
+template <class Coordinates>
+inline double point_distance(const Coordinates& c, std::uint32_t a, std::uint32_t b)
+{
+    const double dx = double(c(0, a)) - double(c(0, b));
+    const double dy = double(c(1, a)) - double(c(1, b));
+    const double dz = double(c(2, a)) - double(c(2, b));
+    return std::sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+/// The column indices of `c` sorted along a Morton (Z-order) curve over their bounding box.
+/// Running the per-point kd-tree queries in this order instead of the cloud's (often random) order
+/// keeps consecutive queries in the same tree nodes, which made graph construction several times
+/// faster on random samples (doc/benchmarks.md). Deterministic; O(N log N).
+template <class Coordinates>
+std::vector<std::uint32_t> spatial_order(const Coordinates& c)
+{
+    const auto n = std::size_t(c.cols());
+    std::vector<std::uint32_t> order(n);
+    std::iota(order.begin(), order.end(), 0u);
+    if (n == 0) return order;
+    const Eigen::Vector3d lo = c.rowwise().minCoeff().template cast<double>();
+    const Eigen::Vector3d extent = c.rowwise().maxCoeff().template cast<double>() - lo;
+    const double scale = double((1u << 21) - 1) / std::max(extent.maxCoeff(), std::numeric_limits<double>::min());
+    auto spread = [](std::uint64_t x) { // 21 bits -> every third of 63 bits
+        x &= 0x1fffff;
+        x = (x | x << 32) & 0x1f00000000ffffull;
+        x = (x | x << 16) & 0x1f0000ff0000ffull;
+        x = (x | x << 8) & 0x100f00f00f00f00full;
+        x = (x | x << 4) & 0x10c30c30c30c30c3ull;
+        x = (x | x << 2) & 0x1249249249249249ull;
+        return x;
+    };
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        std::uint64_t code = 0;
+        for (int d = 0; d < 3; ++d)
+            code |= spread(std::uint64_t((double(c(d, Eigen::Index(i))) - lo[d]) * scale)) << d;
+        keys[i] = {code, std::uint32_t(i)};
+    }
+    std::sort(keys.begin(), keys.end());
+    for (std::size_t i = 0; i < n; ++i) order[i] = keys[i].second;
+    return order;
+}
+
+/// An undirected edge found by a builder, between two original point indices.
+struct Found_edge {
+    std::uint32_t a, b;
+    float length;
+};
+
+/// The distinct positions of a cloud. Coincident points (equal coordinates) form a group whose
+/// representative is its smallest index; graphs are defined over the representatives and every other
+/// member of a group is joined to its representative by one zero-length edge.
+template <class FT>
+struct Distinct_positions {
+    using Coordinates = Eigen::Matrix<FT, 3, Eigen::Dynamic>;
+    /// representative[i]: the smallest index at the position of point i.
+    std::vector<std::uint32_t> representative;
+    /// The representatives in increasing order (== 0..N-1 when there are no coincident points).
+    std::vector<std::uint32_t> unique;
+    /// A kd-tree over the representatives' positions (only when some points coincide); its index k
+    /// is point unique[k].
+    std::unique_ptr<Kd_tree<FT>> own_tree;
+
+    bool has_duplicates() const { return own_tree != nullptr; }
+};
+
+template <class K>
+Distinct_positions<typename K::FT> find_distinct_positions(const Point_cloud<K>& cloud)
+{
+    using FT = typename K::FT;
+    const auto& c = cloud.coordinates();
+    const auto n = static_cast<std::uint32_t>(cloud.size());
+    std::vector<std::uint32_t> order(n);
+    std::iota(order.begin(), order.end(), 0u);
+    auto less = [&](std::uint32_t a, std::uint32_t b) {
+        for (int d = 0; d < 3; ++d)
+            if (c(d, a) != c(d, b)) return c(d, a) < c(d, b);
+        return a < b;
+    };
+    std::sort(order.begin(), order.end(), less);
+    Distinct_positions<FT> result;
+    result.representative.resize(n);
+    bool duplicates = false;
+    for (std::size_t s = 0; s < n;) {
+        std::size_t t = s + 1;
+        while (t < n && c.col(order[t]) == c.col(order[s])) ++t;
+        // order is sorted by index inside a group, so order[s] is the smallest index.
+        for (std::size_t u = s; u < t; ++u) result.representative[order[u]] = order[s];
+        duplicates = duplicates || t - s > 1;
+        s = t;
+    }
+    result.unique.reserve(n);
+    for (std::uint32_t i = 0; i < n; ++i)
+        if (result.representative[i] == i) result.unique.push_back(i);
+    if (duplicates) {
+        typename Distinct_positions<FT>::Coordinates u(3, Eigen::Index(result.unique.size()));
+        for (std::size_t k = 0; k < result.unique.size(); ++k) u.col(Eigen::Index(k)) = c.col(result.unique[k]);
+        result.own_tree = std::make_unique<Kd_tree<FT>>(std::move(u));
+    }
+    return result;
+}
+
+/// The kd-tree to query for distinct positions: the cloud's own, or the one over representatives.
+template <class K>
+const Kd_tree<typename K::FT>& distinct_tree(const Point_cloud<K>& cloud, const Distinct_positions<typename K::FT>& d)
+{
+    return d.has_duplicates() ? *d.own_tree : cloud.kd_tree();
+}
+
+/// Original index of kd-tree result index `k` of distinct_tree().
+template <class FT>
+std::uint32_t original_index(const Distinct_positions<FT>& d, std::uint32_t k)
+{
+    return d.has_duplicates() ? d.unique[k] : k;
+}
+
+/// Assembles the symmetric CSR graph over `n` vertices from undirected edges (a != b; an edge may be
+/// listed twice, once from each end, and is then kept once), plus a zero-length edge from every
+/// non-representative point to its representative. Rows are sorted by target. O(E log E / N + N).
+inline Proximity_graph::Graph assemble_graph(std::uint32_t n, const std::vector<Found_edge>& edges,
+                                             const std::vector<std::uint32_t>& representative)
+{
+    std::vector<std::uint64_t> rows(std::size_t(n) + 1, 0);
+    for (const Found_edge& e : edges) {
+        ++rows[e.a + 1];
+        ++rows[e.b + 1];
+    }
+    for (std::uint32_t i = 0; i < n; ++i)
+        if (representative[i] != i) {
+            ++rows[i + 1];
+            ++rows[representative[i] + 1];
+        }
+    std::partial_sum(rows.begin(), rows.end(), rows.begin());
+    struct Slot {
+        std::uint32_t target;
+        float length;
+    };
+    std::vector<Slot> slots(rows.back());
+    std::vector<std::uint64_t> fill(rows.begin(), rows.end() - 1);
+    for (const Found_edge& e : edges) {
+        slots[fill[e.a]++] = Slot{e.b, e.length};
+        slots[fill[e.b]++] = Slot{e.a, e.length};
+    }
+    for (std::uint32_t i = 0; i < n; ++i)
+        if (representative[i] != i) {
+            slots[fill[i]++] = Slot{representative[i], 0.f};
+            slots[fill[representative[i]]++] = Slot{i, 0.f};
+        }
+    std::vector<std::uint64_t> compact(std::size_t(n) + 1, 0);
+    std::vector<std::uint32_t> targets;
+    std::vector<Proximity_edge> properties;
+    // Sort each row and drop repeated targets (an edge listed from both ends), in place.
+    std::uint64_t out = 0;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        auto first = slots.begin() + std::ptrdiff_t(rows[i]);
+        auto last = slots.begin() + std::ptrdiff_t(rows[i + 1]);
+        std::sort(first, last, [](const Slot& x, const Slot& y) { return x.target < y.target; });
+        for (auto it = first; it != last; ++it)
+            if (it == first || it->target != (it - 1)->target) slots[out++] = *it;
+        compact[i + 1] = out;
+    }
+    targets.resize(out);
+    properties.resize(out);
+    for (std::uint64_t e = 0; e < out; ++e) {
+        targets[e] = slots[e].target;
+        properties[e] = Proximity_edge{slots[e].length, false};
+    }
+    slots = {};
+    return make_csr_graph(compact, targets, properties);
+}
+
+} // namespace PCCD::internal

@@ -1,0 +1,77 @@
+// PCCD/Proximity_graph/knn_graph.h -- the symmetric k-nearest-neighbour graph over a point cloud
+// (ALGORITHMS.md section 2), the simplest proximity graph, built with one kd-tree query per point,
+// in parallel when TBB is available.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include <PCCD/Error.h>
+#include <PCCD/Point_cloud.h>
+#include <PCCD/Proximity_graph/Proximity_graph.h>
+#include <PCCD/Proximity_graph/internal/graph_construction.h>
+#include <PCCD/Proximity_graph/prune_long_edges.h>
+#include <PCCD/internal/parallel.h>
+
+namespace PCCD {
+
+/// Options of knn_graph().
+struct Knn_graph_options {
+    /// Number of nearest neighbours each point is joined to. Default 8. Must be >= 1.
+    unsigned k = 8;
+    /// The long-edge test marking edges virtual (default factor 4).
+    Long_edge_options long_edges = {};
+    /// Worker threads; 0 (default) uses all available. Ignored without TBB. The result does not
+    /// depend on it.
+    unsigned threads = 0;
+};
+
+/// Builds the symmetric k-NN graph of `cloud`: i and j are joined when j is among the k nearest
+/// other positions of i or i among those of j (ties broken by index); then long edges are marked
+/// virtual (mark_long_edges()). Coincident points are handled as in sphere_of_influence_graph():
+/// the graph is built over distinct positions and each copy is joined to its representative by a
+/// zero-length edge.
+///
+/// \tparam K a model of PointCloudKernel.
+/// \throws Invalid_input if `options.k` is 0 or the long-edge factor is not > 0.
+/// Complexity: O(N k log N) expected. Thread safety: reads `cloud` only.
+template <class K>
+Proximity_graph knn_graph(const Point_cloud<K>& cloud, const Knn_graph_options& options = {})
+{
+    using FT = typename K::FT;
+    if (options.k == 0) throw Invalid_input("k-NN graph: k must be >= 1, got 0");
+    internal::check(options.long_edges);
+    const auto distinct = internal::find_distinct_positions(cloud);
+    const Kd_tree<FT>& tree = internal::distinct_tree(cloud, distinct);
+    const auto& c = tree.coordinates();
+    const std::vector<std::uint32_t> order = internal::spatial_order(c);
+    std::vector<internal::Found_edge> edges;
+    internal::with_threads(options.threads, [&] {
+        internal::ordered_blocks(
+            tree.size(), 4096,
+            [&](std::size_t begin, std::size_t end) {
+                std::vector<internal::Found_edge> found;
+                std::vector<Neighbor<FT>> nn;
+                for (std::size_t i = begin; i < end; ++i) {
+                    const std::uint32_t u = order[i];
+                    tree.k_nearest(c.col(Eigen::Index(u)), std::size_t(options.k) + 1, nn);
+                    for (const auto& nb : nn)
+                        if (nb.index != u)
+                            found.push_back({internal::original_index(distinct, u),
+                                             internal::original_index(distinct, nb.index),
+                                             float(internal::point_distance(c, u, nb.index))});
+                }
+                return found;
+            },
+            [&](std::vector<internal::Found_edge> found) { edges.insert(edges.end(), found.begin(), found.end()); });
+    });
+    auto graph = internal::assemble_graph(std::uint32_t(cloud.size()), edges, distinct.representative);
+    edges = {};
+    mark_long_edges(graph, get(&Proximity_edge::length, std::as_const(graph)), get(&Proximity_edge::is_virtual, graph),
+                    options.long_edges);
+    return Proximity_graph(std::move(graph), Graph_kind::knn, options.k);
+}
+
+} // namespace PCCD
