@@ -8,5 +8,6 @@ namespace pccd_tool {
 
 void register_info(CLI::App& app);           // pccd info FILE [--json]
 void register_demo(CLI::App& app);           // pccd demo
+void register_kinetic_bench(CLI::App& app);  // pccd kinetic-bench --scene cloth|bunny|random --size N [--json]
 
 } // namespace pccd_tool

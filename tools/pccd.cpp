@@ -17,6 +17,7 @@ int main(int argc, char** argv)
     app.set_version_flag("--version", PCCD_VERSION_STRING);
     pccd_tool::register_info(app);
     pccd_tool::register_demo(app);
+    pccd_tool::register_kinetic_bench(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -1,0 +1,119 @@
+// Kinetic AABB tree benchmark (ALGORITHMS.md section 7): the talk's table cloth scene at about
+// 1,684, 6,891 and 15,503 triangles, played at 30, 60 and 120 query frames per second with the
+// kinetic tree, bottom-up refit and full rebuild. Writes one CSV row per (size, rate, method) with
+// the BV update and event counts (deterministic) and the median time per frame over repeated runs.
+//
+//   kinetic_benchmark [--sizes 1684,6891,15503] [--rates 30,60,120] [--repeats 5] [--csv FILE]
+//
+// Besides the three methods it also runs, at every size and rate, the kinetic tree with a 4-ary
+// event heap (method "kinetic_4ary_heap", for the choice of Event_queue's arity) and, at 30 Hz,
+// all three methods with the cloth's self-overlap added to the queries ("+self" methods).
+#include <PCCD/Kinetic/Scenes/Cloth_scene.h>
+#include <PCCD/Kinetic/Scenes/run_kinetic_scene.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+std::vector<double> parse_list(const std::string& text)
+{
+    std::vector<double> values;
+    std::stringstream in(text);
+    for (std::string item; std::getline(in, item, ',');) values.push_back(std::stod(item));
+    return values;
+}
+
+double median(std::vector<double> v)
+{
+    std::sort(v.begin(), v.end());
+    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    std::vector<double> sizes{1684, 6891, 15503}, rates{30, 60, 120};
+    int repeats = 5;
+    std::string csv_file = "kinetic_benchmark.csv";
+    for (int i = 1; i + 1 < argc; i += 2) {
+        const std::string key = argv[i], value = argv[i + 1];
+        if (key == "--sizes")
+            sizes = parse_list(value);
+        else if (key == "--rates")
+            rates = parse_list(value);
+        else if (key == "--repeats")
+            repeats = std::max(1, std::stoi(value));
+        else if (key == "--csv")
+            csv_file = value;
+        else {
+            std::cerr << "unknown option " << key << '\n';
+            return 1;
+        }
+    }
+    std::ofstream csv(csv_file);
+    csv << "scene,triangles,nodes,duration_s,query_hz,frames,queries,method,bv_updates,events,"
+           "certificate_computations,build_ms,update_ms_median,query_ms_median,ms_per_frame_median,ms_per_frame_min,"
+           "ms_per_frame_max,repeats\n";
+    std::cout << std::fixed << std::setprecision(3);
+    for (const double size : sizes) {
+        const auto sim_start = std::chrono::steady_clock::now();
+        const auto scene = PCCD::make_cloth_scene({.triangles = std::size_t(size)});
+        const double sim_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - sim_start).count();
+        std::cout << "cloth: " << scene.primitives.size() << " triangles, " << scene.flightplans.size() << " vertices, "
+                  << scene.end_time << " s recorded in " << sim_s << " s of simulation\n";
+        struct Variant {
+            std::string name;
+            PCCD::Kinetic_method method;
+            bool four_ary_heap;
+            bool self;
+        };
+        for (const double rate : rates) {
+            std::vector<Variant> variants{{"kinetic", PCCD::Kinetic_method::kinetic, false, false},
+                                          {"bottom_up", PCCD::Kinetic_method::bottom_up, false, false},
+                                          {"rebuild", PCCD::Kinetic_method::rebuild, false, false},
+                                          {"kinetic_4ary_heap", PCCD::Kinetic_method::kinetic, true, false}};
+            if (rate == rates.front())
+                for (const auto m : {PCCD::Kinetic_method::kinetic, PCCD::Kinetic_method::bottom_up,
+                                     PCCD::Kinetic_method::rebuild})
+                    variants.push_back({PCCD::to_string(m) + "+self", m, false, true});
+            for (const Variant& v : variants) {
+                const PCCD::Kinetic_run_options options{.query_hz = rate, .self_overlap_query = v.self};
+                std::vector<double> times, updates, queries;
+                PCCD::Kinetic_run_result first;
+                for (int r = 0; r < repeats; ++r) {
+                    const auto result = v.four_ary_heap
+                                            ? PCCD::run_kinetic_scene<PCCD::Kinetic_triangle, PCCD::Event_queue<4>>(
+                                                  scene, v.method, options)
+                                            : PCCD::run_kinetic_scene(scene, v.method, options);
+                    if (r == 0) first = result;
+                    times.push_back(result.ms_per_frame);
+                    updates.push_back(result.update_ms_per_frame);
+                    queries.push_back(result.query_ms_per_frame);
+                }
+                const double med = median(times);
+                csv << "cloth," << scene.primitives.size() << ',' << first.nodes << ',' << scene.end_time << ',' << rate
+                    << ',' << first.frames << ',' << first.queries << ',' << v.name << ',' << first.bv_updates << ','
+                    << first.events << ',' << first.certificate_computations << ',' << first.build_ms << ','
+                    << median(updates) << ',' << median(queries) << ',' << med
+                    << ',' << *std::min_element(times.begin(), times.end()) << ','
+                    << *std::max_element(times.begin(), times.end()) << ',' << repeats << '\n';
+                std::cout << "  " << std::setw(5) << rate << " Hz " << std::setw(22) << v.name << "  bv_updates "
+                          << std::setw(9) << first.bv_updates << "  events " << std::setw(8) << first.events
+                          << "  build " << std::setw(8) << first.build_ms << " ms  per frame (median): update "
+                          << median(updates) << " + queries " << median(queries) << " = " << med << " ms\n";
+                csv.flush();
+            }
+        }
+    }
+    std::cout << "CSV written to " << csv_file << '\n';
+    return 0;
+}

@@ -1,0 +1,153 @@
+// PCCD/Kinetic/Scenes/run_kinetic_scene.h -- plays a recorded scene with one of the three update
+// strategies of ALGORITHMS.md section 7 (kinetic events, bottom-up refit, full rebuild), answering
+// queries at a fixed rate, and reports the counters and timings the talk compares. Used by
+// benchmark/kinetic_benchmark.cpp and `pccd kinetic-bench`; usable on any recorded Kinetic_scene.
+#pragma once
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <PCCD/Error.h>
+#include <PCCD/Kinetic/Event_queue.h>
+#include <PCCD/Kinetic/Kinetic_AABB_tree.h>
+#include <PCCD/Kinetic/Refit_AABB_tree.h>
+#include <PCCD/Kinetic/Scenes/Kinetic_scene.h>
+
+namespace PCCD {
+
+/// The update strategy of a run.
+enum class Kinetic_method { kinetic, bottom_up, rebuild };
+
+inline std::string to_string(Kinetic_method m)
+{
+    return m == Kinetic_method::kinetic ? "kinetic" : m == Kinetic_method::bottom_up ? "bottom_up" : "rebuild";
+}
+
+/// Options of run_kinetic_scene.
+struct Kinetic_run_options {
+    /// Query frames per second of animation time; default 30.
+    double query_hz = 30.0;
+    /// Per frame: the overlap of the scene with its obstacle (if any), else a range query with the
+    /// box of the middle eighth of the scene's initial bounding box; default true.
+    bool overlap_query = true;
+    /// Per frame, also the self-overlap of the scene's primitives (non-adjacent pairs); default false.
+    bool self_overlap_query = false;
+};
+
+/// What a run measured. Counts are deterministic; times are wall-clock on the calling thread.
+struct Kinetic_run_result {
+    Kinetic_method method = Kinetic_method::kinetic;
+    std::uint64_t frames = 0;                   ///< query frames played
+    std::uint64_t nodes = 0;                    ///< nodes of the tree over the scene
+    std::uint64_t bv_updates = 0;               ///< kinetic: bound changes; baselines: node boxes recomputed
+    std::uint64_t events = 0;                   ///< kinetic only: certificate failures processed
+    std::uint64_t certificate_computations = 0; ///< kinetic only, after construction
+    std::uint64_t queries = 0;                  ///< queries answered
+    std::uint64_t reported = 0;                 ///< pairs or primitives reported by all queries (a checksum)
+    double build_ms = 0.0;                      ///< construction (kinetic: including all first certificates)
+    double update_ms_per_frame = 0.0;           ///< mean time of advance_to per frame
+    double query_ms_per_frame = 0.0;            ///< mean time of the queries per frame
+    double ms_per_frame = 0.0;                  ///< update + queries
+};
+
+namespace internal {
+
+template <class Tree, class Obstacle>
+void answer_queries(const Tree& tree, const Obstacle& obstacle, bool has_obstacle, const Eigen::AlignedBox3d& range,
+                    const Kinetic_run_options& o, Kinetic_run_result& r,
+                    std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs, std::vector<std::uint32_t>& hits)
+{
+    if (o.overlap_query) {
+        if (has_obstacle) {
+            tree.overlapping_pairs(obstacle, pairs);
+            r.reported += pairs.size();
+        } else {
+            tree.range_query(range, hits);
+            r.reported += hits.size();
+        }
+        ++r.queries;
+    }
+    if (o.self_overlap_query) {
+        tree.self_overlapping_pairs(pairs);
+        r.reported += pairs.size();
+        ++r.queries;
+    }
+}
+
+} // namespace internal
+
+/// Plays `scene` from start_time to end_time with `method`, advancing to every query frame
+/// (start + k / query_hz, k >= 1) and answering the queries of `options` there.
+/// \tparam P the scene's KineticPrimitive; \tparam Queue the kinetic tree's event queue.
+/// \throws Invalid_input if query_hz is not positive.
+template <class P, class Queue = Event_queue<>>
+Kinetic_run_result run_kinetic_scene(const Kinetic_scene<P>& scene, Kinetic_method method,
+                                     const Kinetic_run_options& options = {})
+{
+    if (!(options.query_hz > 0))
+        throw Invalid_input(internal::concat("run_kinetic_scene: query_hz ", options.query_hz, " must be > 0"));
+    using Clock = std::chrono::steady_clock;
+    using F = Piecewise_linear_flightplan;
+    Kinetic_run_result r;
+    r.method = method;
+    Kinetic_AABB_tree<F> obstacle(scene.obstacle_flightplans, scene.obstacle_triangles, scene.start_time);
+    const bool has_obstacle = !scene.obstacle_triangles.empty();
+    Eigen::AlignedBox3d bounds;
+    for (const F& f : scene.flightplans) bounds.extend(f.position(scene.start_time));
+    const Eigen::AlignedBox3d range(bounds.center() - 0.25 * bounds.sizes(), bounds.center() + 0.25 * bounds.sizes());
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    std::vector<std::uint32_t> hits;
+
+    auto play = [&](auto& tree) {
+        double update = 0.0, query = 0.0;
+        for (std::uint64_t k = 1;; ++k) {
+            const double t = scene.start_time + double(k) / options.query_hz;
+            if (t > scene.end_time) break;
+            const auto t0 = Clock::now();
+            tree.advance_to(t);
+            obstacle.advance_to(t);
+            const auto t1 = Clock::now();
+            internal::answer_queries(tree, obstacle, has_obstacle, range, options, r, pairs, hits);
+            const auto t2 = Clock::now();
+            update += std::chrono::duration<double, std::milli>(t1 - t0).count();
+            query += std::chrono::duration<double, std::milli>(t2 - t1).count();
+            ++r.frames;
+        }
+        const double frames = double(std::max<std::uint64_t>(r.frames, 1));
+        r.update_ms_per_frame = update / frames;
+        r.query_ms_per_frame = query / frames;
+        r.ms_per_frame = (update + query) / frames;
+    };
+
+    const auto build_start = Clock::now();
+    if (method == Kinetic_method::kinetic) {
+        Kinetic_AABB_tree<F, P, Queue> tree(scene.flightplans, scene.primitives, scene.start_time);
+        r.build_ms = std::chrono::duration<double, std::milli>(Clock::now() - build_start).count();
+        tree.reset_statistics();
+        play(tree);
+        r.nodes = tree.node_count();
+        r.bv_updates = tree.statistics().bv_updates;
+        r.events = tree.statistics().events;
+        r.certificate_computations = tree.statistics().certificate_computations;
+    } else {
+        Refit_AABB_tree<F, P> tree(scene.flightplans, scene.primitives, scene.start_time,
+                                   {.update = method == Kinetic_method::bottom_up ? Refit_update::bottom_up
+                                                                                  : Refit_update::rebuild});
+        r.build_ms = std::chrono::duration<double, std::milli>(Clock::now() - build_start).count();
+        play(tree);
+        r.nodes = tree.node_count();
+        r.bv_updates = tree.statistics().bv_updates;
+    }
+    return r;
+}
+
+} // namespace PCCD

@@ -1,0 +1,113 @@
+// PCCD/Kinetic/internal/AABB_tree_build.h -- the static top-down build shared by the kinetic tree
+// and its baselines (ALGORITHMS.md section 7: "build any static AABB tree of logarithmic height").
+// Median split of primitive centroids along the longest side of their box: a binary tree with one
+// primitive per leaf and height ceil(log2 n), in O(n log n).
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace PCCD::internal {
+
+inline constexpr std::uint32_t no_node = std::numeric_limits<std::uint32_t>::max();
+
+/// One node of a binary AABB tree: a leaf holds one primitive, an inner node two children.
+struct AABB_node {
+    std::uint32_t parent = no_node;
+    std::uint32_t left = no_node;  ///< no_node for a leaf
+    std::uint32_t right = no_node;
+    std::uint32_t primitive = no_node; ///< the primitive of a leaf
+    bool is_leaf() const { return left == no_node; }
+};
+
+/// Builds the tree over `primitives` (ids into `centroids`) into `nodes` (appended, pre-order, so a
+/// parent precedes its children); returns the root, or no_node when `primitives` is empty.
+/// Ties between equal centroids are broken by primitive id, so the result is deterministic.
+inline std::uint32_t build_median_split(std::vector<std::uint32_t> primitives, const std::vector<Eigen::Vector3d>& centroids,
+                                        std::vector<AABB_node>& nodes)
+{
+    if (primitives.empty()) return no_node;
+    struct Task {
+        std::size_t begin, end;
+        std::uint32_t parent;
+        bool is_left;
+    };
+    std::vector<Task> stack{{0, primitives.size(), no_node, true}};
+    std::uint32_t root = no_node;
+    while (!stack.empty()) {
+        const Task task = stack.back();
+        stack.pop_back();
+        const auto index = std::uint32_t(nodes.size());
+        nodes.push_back({});
+        nodes[index].parent = task.parent;
+        if (task.parent == no_node)
+            root = index;
+        else if (task.is_left)
+            nodes[task.parent].left = index;
+        else
+            nodes[task.parent].right = index;
+        if (task.end - task.begin == 1) {
+            nodes[index].primitive = primitives[task.begin];
+            continue;
+        }
+        Eigen::AlignedBox3d box;
+        for (std::size_t i = task.begin; i < task.end; ++i) box.extend(centroids[primitives[i]]);
+        int axis = 0;
+        box.sizes().maxCoeff(&axis);
+        const std::size_t mid = task.begin + (task.end - task.begin) / 2;
+        std::nth_element(primitives.begin() + std::ptrdiff_t(task.begin), primitives.begin() + std::ptrdiff_t(mid),
+                         primitives.begin() + std::ptrdiff_t(task.end), [&](std::uint32_t a, std::uint32_t b) {
+                             const double ca = centroids[a][axis], cb = centroids[b][axis];
+                             return ca < cb || (ca == cb && a < b);
+                         });
+        // Right pushed first so the left subtree is built first and directly follows its parent.
+        stack.push_back({mid, task.end, index, false});
+        stack.push_back({task.begin, mid, index, true});
+    }
+    return root;
+}
+
+/// Nodes of the subtree of `root` in post-order (children before parents).
+inline void postorder(const std::vector<AABB_node>& nodes, std::uint32_t root, std::vector<std::uint32_t>& out)
+{
+    out.clear();
+    if (root == no_node) return;
+    std::vector<std::uint32_t> stack{root};
+    while (!stack.empty()) {
+        const std::uint32_t n = stack.back();
+        stack.pop_back();
+        out.push_back(n);
+        if (!nodes[n].is_leaf()) {
+            stack.push_back(nodes[n].left);
+            stack.push_back(nodes[n].right);
+        }
+    }
+    std::reverse(out.begin(), out.end());
+}
+
+/// Height of the subtree of `root` (a single leaf has height 0; an empty tree -1).
+inline int height(const std::vector<AABB_node>& nodes, std::uint32_t root)
+{
+    if (root == no_node) return -1;
+    int best = 0;
+    std::vector<std::pair<std::uint32_t, int>> stack{{root, 0}};
+    while (!stack.empty()) {
+        const auto [n, depth] = stack.back();
+        stack.pop_back();
+        best = std::max(best, depth);
+        if (!nodes[n].is_leaf()) {
+            stack.push_back({nodes[n].left, depth + 1});
+            stack.push_back({nodes[n].right, depth + 1});
+        }
+    }
+    return best;
+}
+
+} // namespace PCCD::internal

@@ -1,0 +1,251 @@
+// PCCD/Kinetic/internal/AABB_tree_queries.h -- the queries shared by Kinetic_AABB_tree and its
+// baselines (ALGORITHMS.md section 7: "then run queries (collision, ray casting) on a BVH valid at
+// time t"): box overlap of two trees, self-overlap without adjacent primitives, box range queries,
+// first hit of a ray on triangles, and a generic simultaneous traversal with user callbacks.
+//
+// A tree is read through: root(), is_leaf(n), left(n), right(n), leaf_primitive(n), box(n) (the
+// node's box at the tree's current time), primitive(i) and vertex_position(v).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <PCCD/Kinetic/internal/AABB_tree_build.h>
+
+namespace PCCD {
+
+/// A ray origin + s * direction, s in [s_min, s_max].
+struct Kinetic_ray {
+    Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+    Eigen::Vector3d direction = Eigen::Vector3d::UnitX();
+    double s_min = 0.0;
+    double s_max = std::numeric_limits<double>::infinity();
+};
+
+/// The first hit of a ray: the primitive, the ray parameter s and the barycentric coordinates
+/// (u, v) of the hit point p = (1 - u - v) a + u b + v c on triangle (a, b, c).
+struct Kinetic_ray_hit {
+    std::uint32_t primitive = 0;
+    double s = 0.0;
+    double u = 0.0;
+    double v = 0.0;
+};
+
+/// Ray-triangle intersection (Moeller-Trumbore), the leaf test of every ray query; exposed so that
+/// callers can check answers against brute force. Returns the hit parameter s within
+/// [ray.s_min, ray.s_max] and the barycentrics; nothing for a miss or a ray parallel to the plane.
+inline std::optional<Kinetic_ray_hit> intersect_ray_triangle(const Kinetic_ray& ray, const Eigen::Vector3d& a,
+                                                             const Eigen::Vector3d& b, const Eigen::Vector3d& c)
+{
+    const Eigen::Vector3d e1 = b - a, e2 = c - a;
+    const Eigen::Vector3d p = ray.direction.cross(e2);
+    const double det = e1.dot(p);
+    if (det == 0.0) return std::nullopt;
+    const double inv = 1.0 / det;
+    const Eigen::Vector3d tv = ray.origin - a;
+    const double u = tv.dot(p) * inv;
+    if (u < 0.0 || u > 1.0) return std::nullopt;
+    const Eigen::Vector3d q = tv.cross(e1);
+    const double v = ray.direction.dot(q) * inv;
+    if (v < 0.0 || u + v > 1.0) return std::nullopt;
+    const double s = e2.dot(q) * inv;
+    if (!(s >= ray.s_min && s <= ray.s_max)) return std::nullopt;
+    return Kinetic_ray_hit{0, s, u, v};
+}
+
+/// Closed boxes `a` and `b`, `a` grown by `margin` on every side, overlap.
+inline bool boxes_overlap(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b, double margin)
+{
+    for (int i = 0; i < 3; ++i)
+        if (a.min()[i] - margin > b.max()[i] || b.min()[i] > a.max()[i] + margin) return false;
+    return true;
+}
+
+namespace internal {
+
+template <class Tree>
+bool primitives_adjacent(const Tree& tree, std::uint32_t i, std::uint32_t j)
+{
+    using P = std::remove_cvref_t<decltype(tree.primitive(i))>;
+    const P& a = tree.primitive(i);
+    const P& b = tree.primitive(j);
+    for (std::size_t x = 0; x < P::vertex_count; ++x)
+        for (std::size_t y = 0; y < P::vertex_count; ++y)
+            if (std::uint32_t(a.vertex(x)) == std::uint32_t(b.vertex(y))) return true;
+    return false;
+}
+
+/// Simultaneous depth-first traversal of two trees: `descend(na, nb, box_a, box_b)` decides whether
+/// a node pair is opened, `on_leaf_pair(na, nb)` is called for leaf pairs that pass `descend`.
+/// The node with the larger box (by diagonal) is opened first; leaves are never opened.
+template <class TreeA, class TreeB, class Descend, class OnLeafPair>
+void traverse_pairs(const TreeA& a, std::uint32_t root_a, const TreeB& b, std::uint32_t root_b, Descend&& descend,
+                    OnLeafPair&& on_leaf_pair)
+{
+    if (root_a == no_node || root_b == no_node) return;
+    struct Item {
+        std::uint32_t na, nb;
+        Eigen::AlignedBox3d box_a, box_b;
+    };
+    std::vector<Item> stack{{root_a, root_b, a.box(root_a), b.box(root_b)}};
+    while (!stack.empty()) {
+        const Item item = stack.back();
+        stack.pop_back();
+        if (!descend(item.na, item.nb, item.box_a, item.box_b)) continue;
+        const bool leaf_a = a.is_leaf(item.na), leaf_b = b.is_leaf(item.nb);
+        if (leaf_a && leaf_b) {
+            on_leaf_pair(item.na, item.nb);
+            continue;
+        }
+        const bool open_a = !leaf_a && (leaf_b || item.box_a.diagonal().squaredNorm() >= item.box_b.diagonal().squaredNorm());
+        if (open_a) {
+            const std::uint32_t r = a.right(item.na), l = a.left(item.na);
+            stack.push_back({r, item.nb, a.box(r), item.box_b});
+            stack.push_back({l, item.nb, a.box(l), item.box_b});
+        } else {
+            const std::uint32_t r = b.right(item.nb), l = b.left(item.nb);
+            stack.push_back({item.na, r, item.box_a, b.box(r)});
+            stack.push_back({item.na, l, item.box_a, b.box(l)});
+        }
+    }
+}
+
+template <class TreeA, class TreeB>
+void overlapping_pairs(const TreeA& a, const TreeB& b, double margin,
+                       std::vector<std::pair<std::uint32_t, std::uint32_t>>& out)
+{
+    out.clear();
+    traverse_pairs(
+        a, a.root(), b, b.root(),
+        [&](std::uint32_t, std::uint32_t, const Eigen::AlignedBox3d& ba, const Eigen::AlignedBox3d& bb) {
+            return boxes_overlap(ba, bb, margin);
+        },
+        [&](std::uint32_t na, std::uint32_t nb) { out.emplace_back(a.leaf_primitive(na), b.leaf_primitive(nb)); });
+}
+
+template <class Tree>
+void self_overlapping_pairs(const Tree& tree, double margin, std::vector<std::pair<std::uint32_t, std::uint32_t>>& out)
+{
+    out.clear();
+    if (tree.root() == no_node) return;
+    auto descend = [&](std::uint32_t, std::uint32_t, const Eigen::AlignedBox3d& ba, const Eigen::AlignedBox3d& bb) {
+        return boxes_overlap(ba, bb, margin);
+    };
+    auto on_leaf_pair = [&](std::uint32_t na, std::uint32_t nb) {
+        const std::uint32_t i = tree.leaf_primitive(na), j = tree.leaf_primitive(nb);
+        if (!primitives_adjacent(tree, i, j)) out.emplace_back(std::min(i, j), std::max(i, j));
+    };
+    // Every unordered pair of distinct leaves is met exactly once, under its lowest common ancestor.
+    std::vector<std::uint32_t> stack{tree.root()};
+    while (!stack.empty()) {
+        const std::uint32_t n = stack.back();
+        stack.pop_back();
+        if (tree.is_leaf(n)) continue;
+        traverse_pairs(tree, tree.left(n), tree, tree.right(n), descend, on_leaf_pair);
+        stack.push_back(tree.right(n));
+        stack.push_back(tree.left(n));
+    }
+}
+
+template <class Tree>
+void range_query(const Tree& tree, const Eigen::AlignedBox3d& query, std::vector<std::uint32_t>& out)
+{
+    out.clear();
+    if (tree.root() == no_node) return;
+    std::vector<std::uint32_t> stack{tree.root()};
+    while (!stack.empty()) {
+        const std::uint32_t n = stack.back();
+        stack.pop_back();
+        if (!boxes_overlap(tree.box(n), query, 0.0)) continue;
+        if (tree.is_leaf(n)) {
+            out.push_back(tree.leaf_primitive(n));
+        } else {
+            stack.push_back(tree.right(n));
+            stack.push_back(tree.left(n));
+        }
+    }
+}
+
+/// Entry parameter of the ray into `box` within [s_min, s_max], or nothing. Conservative: the exit
+/// is enlarged by a few ulps (Ize's robust slab test) so a hit on a face is never culled.
+inline std::optional<double> ray_box_entry(const Kinetic_ray& ray, const Eigen::AlignedBox3d& box, double s_max)
+{
+    constexpr double eps = std::numeric_limits<double>::epsilon();
+    constexpr double grow = 1.0 + 4.0 * eps;
+    double lo = ray.s_min, hi = s_max;
+    for (int i = 0; i < 3; ++i) {
+        const double d = ray.direction[i], o = ray.origin[i];
+        if (d == 0.0) {
+            if (o < box.min()[i] || o > box.max()[i]) return std::nullopt;
+            continue;
+        }
+        double t0 = (box.min()[i] - o) / d, t1 = (box.max()[i] - o) / d;
+        if (t0 > t1) std::swap(t0, t1);
+        t0 = t0 > 0.0 ? t0 / grow : t0 * grow;
+        t1 = t1 > 0.0 ? t1 * grow : t1 / grow;
+        lo = std::max(lo, t0);
+        hi = std::min(hi, t1);
+        if (lo > hi) return std::nullopt;
+    }
+    if (lo > hi) return std::nullopt;
+    return lo;
+}
+
+/// The first hit of `ray` on the triangles of `tree` (smallest s, then smallest primitive index).
+template <class Tree>
+std::optional<Kinetic_ray_hit> first_hit(const Tree& tree, const Kinetic_ray& ray)
+{
+    std::optional<Kinetic_ray_hit> best;
+    if (tree.root() == no_node) return best;
+    std::vector<std::pair<std::uint32_t, double>> stack;
+    if (const auto s = ray_box_entry(ray, tree.box(tree.root()), ray.s_max)) stack.push_back({tree.root(), *s});
+    while (!stack.empty()) {
+        const auto [n, entry] = stack.back();
+        stack.pop_back();
+        if (best && entry > best->s) continue;
+        if (tree.is_leaf(n)) {
+            const std::uint32_t i = tree.leaf_primitive(n);
+            const auto& t = tree.primitive(i);
+            auto hit = intersect_ray_triangle(ray, tree.vertex_position(t.vertex(0)), tree.vertex_position(t.vertex(1)),
+                                              tree.vertex_position(t.vertex(2)));
+            if (hit && (!best || hit->s < best->s || (hit->s == best->s && i < best->primitive))) {
+                hit->primitive = i;
+                best = hit;
+            }
+            continue;
+        }
+        const double limit = best ? best->s : ray.s_max;
+        const std::uint32_t l = tree.left(n), r = tree.right(n);
+        const auto sl = ray_box_entry(ray, tree.box(l), limit);
+        const auto sr = ray_box_entry(ray, tree.box(r), limit);
+        // Push the farther child first so the nearer one is opened first.
+        if (sl && sr) {
+            if (*sl <= *sr) {
+                stack.push_back({r, *sr});
+                stack.push_back({l, *sl});
+            } else {
+                stack.push_back({l, *sl});
+                stack.push_back({r, *sr});
+            }
+        } else if (sl) {
+            stack.push_back({l, *sl});
+        } else if (sr) {
+            stack.push_back({r, *sr});
+        }
+    }
+    return best;
+}
+
+} // namespace internal
+} // namespace PCCD

@@ -1,0 +1,205 @@
+// Queries on kinetic and refit trees (issue: kinetic AABB tree, items 3 and 4): box overlap of two
+// trees, self-overlap without adjacent primitives, first ray hit on triangles and box range queries
+// at random times equal brute force over all primitives, for the kinetic tree and both baselines;
+// the traversal hook visits the same leaf pairs; point clouds with a proximity margin.
+#include <PCCD/Kinetic/Kinetic_AABB_tree.h>
+#include <PCCD/Kinetic/Refit_AABB_tree.h>
+#include <PCCD/Kinetic/Scenes/Cloth_scene.h>
+#include <PCCD/Kinetic/Scenes/Deforming_cloud_scene.h>
+#include <PCCD/Kinetic/Scenes/Random_motion_scene.h>
+#include <PCCD/Random.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace {
+
+using Pairs = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
+
+template <class P>
+std::vector<Eigen::AlignedBox3d> primitive_boxes(const std::vector<PCCD::Piecewise_linear_flightplan>& plans,
+                                                 const std::vector<P>& primitives, double t)
+{
+    std::vector<Eigen::AlignedBox3d> boxes;
+    for (const P& p : primitives) {
+        Eigen::AlignedBox3d box;
+        for (std::size_t k = 0; k < P::vertex_count; ++k) box.extend(plans[p.vertex(k)].position(t));
+        boxes.push_back(box);
+    }
+    return boxes;
+}
+
+bool overlap(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b, double margin)
+{
+    return (a.min().array() - margin <= b.max().array()).all() && (b.min().array() <= a.max().array() + margin).all();
+}
+
+Pairs sorted(Pairs p)
+{
+    std::sort(p.begin(), p.end());
+    return p;
+}
+
+template <class TreeA, class TreeB, class TreeC>
+void check_cloth_queries(TreeA& kinetic, TreeB& refit, TreeC& rebuild, const PCCD::Kinetic_scene<PCCD::Kinetic_triangle>& scene,
+                         std::uint64_t seed)
+{
+    PCCD::Kinetic_AABB_tree<PCCD::Piecewise_linear_flightplan> table(scene.obstacle_flightplans,
+                                                                     scene.obstacle_triangles);
+    PCCD::Random_engine rng(seed);
+    std::vector<double> times(60);
+    for (double& t : times) t = PCCD::uniform_real(rng, scene.start_time, scene.end_time);
+    std::sort(times.begin(), times.end());
+    std::size_t total_pairs = 0, total_self = 0, hits = 0;
+    for (const double t : times) {
+        kinetic.advance_to(t);
+        refit.advance_to(t);
+        rebuild.advance_to(t);
+        table.advance_to(t);
+        const auto boxes = primitive_boxes(scene.flightplans, scene.primitives, t);
+        const auto table_boxes = primitive_boxes(scene.obstacle_flightplans, scene.obstacle_triangles, t);
+
+        // Overlap with the table.
+        Pairs expected;
+        for (std::uint32_t i = 0; i < boxes.size(); ++i)
+            for (std::uint32_t j = 0; j < table_boxes.size(); ++j)
+                if (overlap(boxes[i], table_boxes[j], 0.01)) expected.emplace_back(i, j);
+        Pairs got;
+        kinetic.overlapping_pairs(table, got, 0.01);
+        CHECK(sorted(got) == expected);
+        refit.overlapping_pairs(table, got, 0.01);
+        CHECK(sorted(got) == expected);
+        rebuild.overlapping_pairs(table, got, 0.01);
+        CHECK(sorted(got) == expected);
+        total_pairs += expected.size();
+
+        // Self-overlap without adjacent triangles.
+        Pairs expected_self;
+        for (std::uint32_t i = 0; i < boxes.size(); ++i)
+            for (std::uint32_t j = i + 1; j < boxes.size(); ++j) {
+                const auto& a = scene.primitives[i].indices;
+                const auto& b = scene.primitives[j].indices;
+                const bool adjacent = std::any_of(a.begin(), a.end(), [&](std::uint32_t v) {
+                    return std::find(b.begin(), b.end(), v) != b.end();
+                });
+                if (!adjacent && overlap(boxes[i], boxes[j], 0.0)) expected_self.emplace_back(i, j);
+            }
+        kinetic.self_overlapping_pairs(got);
+        CHECK(sorted(got) == expected_self);
+        refit.self_overlapping_pairs(got);
+        CHECK(sorted(got) == expected_self);
+        rebuild.self_overlapping_pairs(got);
+        CHECK(sorted(got) == expected_self);
+        total_self += expected_self.size();
+
+        // Rays from above and from the side towards the cloth.
+        for (int r = 0; r < 20; ++r) {
+            PCCD::Kinetic_ray ray;
+            ray.origin = Eigen::Vector3d(PCCD::uniform_real(rng, -1.2, 1.2), PCCD::uniform_real(rng, -1.2, 1.2), 1.0);
+            ray.direction = Eigen::Vector3d(PCCD::uniform_real(rng, -0.5, 0.5), PCCD::uniform_real(rng, -0.5, 0.5), -1.0);
+            if (r % 4 == 3) ray.direction = Eigen::Vector3d(0, 0, -1); // axis-parallel: zero components
+            std::optional<PCCD::Kinetic_ray_hit> truth;
+            for (std::uint32_t i = 0; i < scene.primitives.size(); ++i) {
+                const auto& tri = scene.primitives[i];
+                auto hit = PCCD::intersect_ray_triangle(ray, scene.flightplans[tri.vertex(0)].position(t),
+                                                        scene.flightplans[tri.vertex(1)].position(t),
+                                                        scene.flightplans[tri.vertex(2)].position(t));
+                if (hit && (!truth || hit->s < truth->s)) {
+                    hit->primitive = i;
+                    truth = hit;
+                }
+            }
+            for (const auto& got_hit : {kinetic.first_hit(ray), refit.first_hit(ray), rebuild.first_hit(ray)}) {
+                REQUIRE(got_hit.has_value() == truth.has_value());
+                if (truth) {
+                    CHECK(got_hit->primitive == truth->primitive);
+                    CHECK(got_hit->s == truth->s);
+                }
+            }
+            hits += truth.has_value();
+        }
+
+        // Range queries.
+        for (int r = 0; r < 5; ++r) {
+            const Eigen::Vector3d c(PCCD::uniform_real(rng, -1, 1), PCCD::uniform_real(rng, -1, 1),
+                                    PCCD::uniform_real(rng, -0.6, 0.3));
+            const Eigen::AlignedBox3d query(c, c + Eigen::Vector3d::Constant(0.3));
+            std::vector<std::uint32_t> expected_range, got_range;
+            for (std::uint32_t i = 0; i < boxes.size(); ++i)
+                if (overlap(boxes[i], query, 0.0)) expected_range.push_back(i);
+            kinetic.range_query(query, got_range);
+            std::sort(got_range.begin(), got_range.end());
+            CHECK(got_range == expected_range);
+            refit.range_query(query, got_range);
+            std::sort(got_range.begin(), got_range.end());
+            CHECK(got_range == expected_range);
+        }
+    }
+    CHECK(total_pairs > 100);
+    CHECK(total_self > 100);
+    CHECK(hits > 100);
+}
+
+} // namespace
+
+TEST_CASE("cloth queries equal brute force for the kinetic tree and both baselines", "[kinetic][query]")
+{
+    const auto scene = PCCD::make_cloth_scene({.triangles = 400, .duration = 1.5});
+    PCCD::Kinetic_AABB_tree<PCCD::Piecewise_linear_flightplan> kinetic(scene.flightplans, scene.primitives);
+    PCCD::Refit_AABB_tree<PCCD::Piecewise_linear_flightplan> refit(scene.flightplans, scene.primitives);
+    PCCD::Refit_AABB_tree<PCCD::Piecewise_linear_flightplan> rebuild(scene.flightplans, scene.primitives, 0.0,
+                                                                     {.update = PCCD::Refit_update::rebuild});
+    check_cloth_queries(kinetic, refit, rebuild, scene, 5);
+    CHECK(refit.statistics().bv_updates == refit.statistics().frames * refit.node_count());
+    CHECK(rebuild.statistics().rebuilds == rebuild.statistics().frames);
+}
+
+TEST_CASE("point clouds: proximity pairs with a margin and the traversal hook", "[kinetic][query]")
+{
+    const auto cloud = PCCD::make_deforming_cloud_scene({.points = 500, .duration = 1.0});
+    const auto other = PCCD::make_random_motion_scene({.points = 400, .duration = 1.0, .seed = 3});
+    using Tree = PCCD::Kinetic_AABB_tree<PCCD::Piecewise_linear_flightplan, PCCD::Kinetic_point>;
+    Tree a(cloud.flightplans, cloud.primitives);
+    Tree b(other.flightplans, other.primitives);
+    PCCD::Refit_AABB_tree<PCCD::Piecewise_linear_flightplan, PCCD::Kinetic_point> b_refit(other.flightplans,
+                                                                                          other.primitives);
+    PCCD::Random_engine rng(17);
+    const double margin = 0.05;
+    std::size_t total = 0;
+    for (int k = 1; k <= 40; ++k) {
+        const double t = k / 40.0;
+        a.advance_to(t);
+        b.advance_to(t);
+        b_refit.advance_to(t);
+        Pairs expected;
+        for (std::uint32_t i = 0; i < cloud.primitives.size(); ++i)
+            for (std::uint32_t j = 0; j < other.primitives.size(); ++j) {
+                const Eigen::Vector3d p = cloud.flightplans[i].position(t), q = other.flightplans[j].position(t);
+                if (((p - q).cwiseAbs().array() <= margin).all()) expected.emplace_back(i, j);
+            }
+        Pairs got;
+        a.overlapping_pairs(b, got, margin);
+        CHECK(sorted(got) == expected);
+        a.overlapping_pairs(b_refit, got, margin);
+        CHECK(sorted(got) == expected);
+        // The hook: a custom descend test and leaf callback see the same pairs.
+        Pairs via_hook;
+        a.traverse(
+            b,
+            [&](std::uint32_t, std::uint32_t, const Eigen::AlignedBox3d& ba, const Eigen::AlignedBox3d& bb) {
+                return PCCD::boxes_overlap(ba, bb, margin);
+            },
+            [&](std::uint32_t na, std::uint32_t nb) { via_hook.emplace_back(a.leaf_primitive(na), b.leaf_primitive(nb)); });
+        CHECK(sorted(via_hook) == expected);
+        total += expected.size();
+    }
+    CHECK(total > 50);
+    b.advance_to(2.0);
+    Pairs out;
+    CHECK_THROWS_AS(a.overlapping_pairs(b, out), PCCD::Invalid_input);
+    CHECK_THROWS_AS(a.self_overlapping_pairs(out, -1.0), PCCD::Invalid_input);
+}
