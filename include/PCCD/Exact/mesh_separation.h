@@ -277,7 +277,7 @@ inline void check_sampling_radius(double sampling_radius)
 /// (intersecting; a ball wholly inside or outside takes one exact inside test, only leaves
 /// straddling the surface one per vertex); plus the edge pairs of the closest region (quadratic in
 /// their number, which is small unless the surfaces run parallel at the minimum distance). Typically a few milliseconds to a few tens
-/// of milliseconds for two 75k-triangle meshes (see doc/manual-exact.md). No tree is rebuilt.
+/// of milliseconds for two 75k-triangle meshes (see doc/manual/exact.md). No tree is rebuilt.
 /// Thread-safe.
 inline Exact_separation exact_separation(const Exact_mesh& a, const Rigid_transform_3<double>& pose_a,
                                          const Exact_mesh& b, const Rigid_transform_3<double>& pose_b)

@@ -29,7 +29,7 @@ struct Long_edge_options {
     /// bunny (10^5 points, r-SIG with r = 3) it marks 12 of 577,000 edges clean and 7 with noise of
     /// 0.3 spacings, and the r-SIG stays one component; factor 3 marked 94 and cut 8 points off in 2
     /// fragments; an edge from a surface to an isolated outlier or across a bridge of sparse points
-    /// is typically 10 times the scale (doc/manual-graph.md). +infinity turns the test off. Must be
+    /// is typically 10 times the scale (doc/manual/graphs.md). +infinity turns the test off. Must be
     /// > 0 and not NaN.
     double factor = 4.0;
 };

@@ -21,7 +21,7 @@ struct Sphere_of_influence_graph_options {
     /// The radius of influence of a point is its distance to its r-th nearest neighbour (r = 1: the
     /// plain SIG). Default 3, the smaller of the two values the paper recommends: on noisy bunny
     /// scans r = 3 already gives one component per piece while r = 4 costs a third more edges and
-    /// CPSP time (doc/manual-graph.md). Must be >= 1.
+    /// CPSP time (doc/manual/graphs.md). Must be >= 1.
     unsigned r = 3;
     /// The long-edge test marking edges virtual (default factor 4).
     Long_edge_options long_edges = {};
