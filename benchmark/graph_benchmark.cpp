@@ -69,7 +69,7 @@ struct Arguments {
     std::size_t repeats = 3;
     std::vector<unsigned> threads = {1, 2};
     unsigned r = 3;
-    double support = 4.0;
+    double support = 3.0;
     std::vector<std::string> dijkstra = {"hand", "boost"};
     double noise = 0.3;
     double factor = 4.0; // long-edge factor (the library default)

@@ -9,5 +9,6 @@ namespace pccd_tool {
 void register_info(CLI::App& app);           // pccd info FILE [--json]
 void register_demo(CLI::App& app);           // pccd demo
 void register_kinetic_bench(CLI::App& app);  // pccd kinetic-bench --scene cloth|bunny|random --size N [--json]
+void register_eval(CLI::App& app);           // pccd eval FILE --at "x y z" [--kernel K] [--json]
 
 } // namespace pccd_tool

@@ -18,6 +18,7 @@ int main(int argc, char** argv)
     pccd_tool::register_info(app);
     pccd_tool::register_demo(app);
     pccd_tool::register_kinetic_bench(app);
+    pccd_tool::register_eval(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -49,8 +49,9 @@ enum class Bounded_dijkstra : std::uint8_t {
 struct Cpsp_options {
     /// eta: the search bound in units of the sampling radius r(P); the bound is eta * r(P), the
     /// support of the Gaussian kernel with h = eta r / sqrt(-ln theta_eps) (ALGORITHMS.md section 1).
-    /// Default 4, PROVISIONAL: the surface issue decides eta by measurement. Must be > 0.
-    double support = 4.0;
+    /// Default 3, the implicit surface's default eta (chosen by measurement, doc/manual/surface.md).
+    /// Must be > 0.
+    double support = 3.0;
     /// Walk virtual edges too. Default false: the surface's geodesic distances ignore them.
     bool use_virtual_edges = false;
     /// The bounded Dijkstra implementation (default: the faster, hand-written one).

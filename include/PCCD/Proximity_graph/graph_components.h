@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <numeric>
+#include <type_traits>
 #include <vector>
 
 #include <boost/graph/graph_traits.hpp>
@@ -30,7 +31,7 @@ struct Graph_components {
 /// \tparam VirtualMap a model of EdgeFlagMap (PCCD::No_virtual_edges for graphs without the mark).
 /// Complexity: O(E α(N)) (union-find). Thread safety: reads `g` only.
 template <class Graph, class VirtualMap = No_virtual_edges>
-    requires EdgeFlagMap<VirtualMap, Graph>
+    requires EdgeFlagMap<VirtualMap, Graph> && (!std::is_same_v<Graph, Proximity_graph>)
 Graph_components graph_components(const Graph& g, const VirtualMap& is_virtual = {}, bool include_virtual = false)
 {
     const std::size_t n = num_vertices(g);

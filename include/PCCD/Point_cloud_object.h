@@ -1,0 +1,494 @@
+// PCCD/Point_cloud_object.h -- the whole preprocessed state of one point cloud (DESIGN.md, "Object"):
+// points and kd-tree, proximity graph, sampling radius, CPSP map, oriented normals and the kernel
+// bandwidth of the implicit surface (ALGORITHMS.md sections 1-3), built in one call, saved to and
+// loaded from one binary file, with the time each preprocessing stage took. Later stages (the
+// hierarchy of section 4) attach to it.
+#pragma once
+
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <memory>
+#include <optional>
+#include <ranges>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include <PCCD/Eigen_kernel.h>
+#include <PCCD/Error.h>
+#include <PCCD/Geodesic/Close_pairs_shortest_paths.h>
+#include <PCCD/Geodesic/geodesic_io.h>
+#include <PCCD/Identity_point_map.h>
+#include <PCCD/Point_cloud.h>
+#include <PCCD/Point_traits.h>
+#include <PCCD/Proximity_graph/Proximity_graph.h>
+#include <PCCD/Proximity_graph/knn_graph.h>
+#include <PCCD/Proximity_graph/sphere_of_influence_graph.h>
+#include <PCCD/Surface/Euclidean_distance.h>
+#include <PCCD/Surface/Gaussian_weight.h>
+#include <PCCD/Surface/Geodesic_distance.h>
+#include <PCCD/Surface/WLS_surface.h>
+#include <PCCD/Surface/bandwidth.h>
+#include <PCCD/Surface/estimate_normals.h>
+#include <PCCD/Surface/orient_normals.h>
+#include <PCCD/concepts/PointCloudKernel.h>
+#include <PCCD/concepts/ReadablePointMap.h>
+#include <PCCD/sampling_radius.h>
+
+namespace PCCD {
+
+/// Options of Point_cloud_object. Every field has a documented default; use designated
+/// initializers: `{.graph = Graph_kind::knn, .bandwidth = {.eta = 2.5}}`.
+struct Point_cloud_object_options {
+    /// Which proximity graph to build. Default: the r-SIG (Graph_kind::sphere_of_influence).
+    Graph_kind graph = Graph_kind::sphere_of_influence;
+    /// Options of the r-SIG (default r = 3), used when graph == sphere_of_influence.
+    Sphere_of_influence_graph_options sphere_of_influence = {};
+    /// Options of the k-NN graph (default k = 8), used when graph == knn.
+    Knn_graph_options knn = {};
+    /// Options of the Monte-Carlo sampling radius r(P) (default: 0.99 quantile, 10^4 samples).
+    Sampling_radius_options sampling_radius = {};
+    /// The kernel: eta (default 3), theta_eps (default 1e-2), or a bandwidth h given by the user.
+    Bandwidth_options bandwidth = {};
+    /// Worker threads of every stage; 0 (default) uses all available. Ignored without TBB. The
+    /// result does not depend on it.
+    unsigned threads = 0;
+};
+
+/// Wall-clock time of each preprocessing stage, in milliseconds (0 for a loaded object, except
+/// kd_tree, which is rebuilt on load).
+struct Preprocessing_times {
+    double kd_tree = 0.0;
+    double graph = 0.0;
+    double sampling_radius = 0.0;
+    double cpsp = 0.0;
+    /// Normal estimation and orientation.
+    double normals = 0.0;
+};
+
+/// The preprocessed state of one point cloud: everything a collision query needs, built once.
+///
+/// Construction runs, in order: the kd-tree (Point_cloud), the proximity graph, the sampling radius
+/// r(P), the kernel bandwidth h = eta r(P) / sqrt(-ln theta_eps) (or the user's h), the CPSP map
+/// bounded at the kernel's support radius R = h sqrt(-ln theta_eps), the unoriented normals n(p_i)
+/// of the geodesic surface, and their orientation (over the graph, or like normals the user gives).
+///
+/// \tparam K a model of PointCloudKernel.
+///
+/// Immutable after construction; copies share the data. Thread safety: every member function is
+/// const and safe to call concurrently. save() and load() touch the file system only.
+template <PointCloudKernel K = Eigen_kernel<double>>
+class Point_cloud_object {
+public:
+    using Kernel = K;
+    using FT = typename K::FT;
+    using Geodesic_surface = WLS_surface<Geodesic_distance<K>, Gaussian_weight>;
+    using Euclidean_surface = WLS_surface<Euclidean_distance<K>, Gaussian_weight>;
+
+    /// Version of the file format written by save().
+    static constexpr std::uint32_t file_version = 1;
+
+    /// \name Construction
+    /// @{
+
+    /// Builds the object from the points of `items` (through `point_map`); normals are oriented by
+    /// propagation over the graph.
+    /// \tparam Range an input range of items.
+    /// \tparam PointMap a model of ReadablePointMap for the range's items.
+    /// \throws Invalid_input for an empty cloud, a non-finite point, fewer than two points, or
+    ///         invalid options (messages of the stage that rejects them).
+    /// Complexity: O(N log N) expected for bounded support (graph, CPSP and normals are O(N k)).
+    template <std::ranges::input_range Range,
+              class PointMap = Identity_point_map<std::ranges::range_value_t<Range>>>
+        requires ReadablePointMap<PointMap, std::ranges::range_value_t<Range>>
+    explicit Point_cloud_object(const Range& items, const PointMap& point_map = PointMap(),
+                                const Point_cloud_object_options& options = {})
+        : Point_cloud_object(timed_cloud(items, point_map), std::nullopt, options)
+    {
+    }
+
+    /// As above, but each normal n(p_i) takes the sign of the normal `get(normal_map, item)` the
+    /// user gives (e.g. read from a PLY file) instead of being propagated over the graph.
+    /// \tparam NormalMap a readable property map from items to vectors (any Point3 type).
+    /// \throws Invalid_input also if a given normal is zero or not finite.
+    template <std::ranges::input_range Range, class PointMap, class NormalMap>
+        requires ReadablePointMap<PointMap, std::ranges::range_value_t<Range>> &&
+                 ReadablePointMap<NormalMap, std::ranges::range_value_t<Range>>
+    Point_cloud_object(const Range& items, const PointMap& point_map, const NormalMap& normal_map,
+                       const Point_cloud_object_options& options = {})
+        : Point_cloud_object(timed_cloud(items, point_map), read_normals(items, normal_map), options)
+    {
+    }
+
+    /// Loads an object written by save(). The kd-tree is rebuilt; everything else is read back bit
+    /// for bit.
+    /// \throws File_error naming the file and the problem when it is missing, not a PCCD object
+    ///         file, of another format version or byte order, truncated, corrupted (checksum) or
+    ///         inconsistent.
+    static Point_cloud_object load(const std::string& path);
+    /// @}
+
+    /// Writes the object to the binary file `path` (replacing it): points, normals, parameters,
+    /// timings and the graph and CPSP map (in the format of write_geodesic_data()), with a checksum.
+    /// \throws File_error if the file cannot be written.
+    void save(const std::string& path) const;
+
+    /// \name The implicit surface
+    /// @{
+    /// The surface with the geodesic kernel (the default of PCCD).
+    const Geodesic_surface& surface() const { return m_data->geodesic; }
+    /// The same surface with the Euclidean kernel (same weight and normals); it bleeds across gaps
+    /// thinner than twice the support radius.
+    const Euclidean_surface& euclidean_surface() const { return m_data->euclidean; }
+    /// @}
+
+    /// \name Preprocessed state
+    /// @{
+    const Point_cloud<K>& cloud() const { return m_data->cloud; }
+    std::size_t size() const { return m_data->cloud.size(); }
+    const Proximity_graph& graph() const { return *m_data->graph; }
+    const Close_pairs_shortest_paths& cpsp() const { return *m_data->cpsp; }
+    /// r(P).
+    double sampling_radius() const { return m_data->sampling_radius; }
+    /// The kernel (bandwidth h, threshold theta_eps, support radius R).
+    const Gaussian_weight& weight() const { return m_data->geodesic.weight(); }
+    double bandwidth() const { return weight().bandwidth(); }
+    double theta_eps() const { return weight().threshold(); }
+    /// R / r(P): the eta of the options, or the one implied by a bandwidth the user gave.
+    double eta() const { return weight().support_radius() / m_data->sampling_radius; }
+    /// The oriented normals, 3 x N (zero columns: points whose normal is undetermined).
+    const Eigen::Matrix3Xd& normals() const { return m_data->geodesic.normals(); }
+    /// What the orientation did (components is 0 when the user gave the normals).
+    const Orientation_report& orientation() const { return m_data->orientation; }
+    /// True when the normals were oriented like normals the user gave.
+    bool normals_given() const { return m_data->normals_given; }
+    const Preprocessing_times& timings() const { return m_data->timings; }
+    /// @}
+
+private:
+    using Clock = std::chrono::steady_clock;
+
+    struct Data {
+        Point_cloud<K> cloud;
+        std::shared_ptr<const Proximity_graph> graph;
+        std::shared_ptr<const Close_pairs_shortest_paths> cpsp;
+        double sampling_radius;
+        Orientation_report orientation;
+        bool normals_given;
+        Preprocessing_times timings;
+        Geodesic_surface geodesic;
+        Euclidean_surface euclidean;
+    };
+
+    struct Timed_cloud {
+        Point_cloud<K> cloud;
+        double milliseconds;
+    };
+
+    explicit Point_cloud_object(std::shared_ptr<const Data> data) : m_data(std::move(data)) {}
+
+    Point_cloud_object(Timed_cloud built, std::optional<Eigen::Matrix3Xd> given_normals,
+                       const Point_cloud_object_options& options)
+        : m_data(preprocess(std::move(built), std::move(given_normals), options))
+    {
+    }
+
+    static double ms_since(Clock::time_point start)
+    {
+        return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    }
+
+    template <class Range, class PointMap>
+    static Timed_cloud timed_cloud(const Range& items, const PointMap& point_map)
+    {
+        const auto start = Clock::now();
+        Point_cloud<K> cloud(items, point_map);
+        return {std::move(cloud), ms_since(start)};
+    }
+
+    template <class Range, class NormalMap>
+    static Eigen::Matrix3Xd read_normals(const Range& items, const NormalMap& normal_map)
+    {
+        std::vector<Eigen::Vector3d> normals;
+        for (const auto& item : items) {
+            const auto& v = get(normal_map, item);
+            using V = std::remove_cvref_t<decltype(v)>;
+            normals.emplace_back(double(Point_traits<V>::x(v)), double(Point_traits<V>::y(v)),
+                                 double(Point_traits<V>::z(v)));
+        }
+        Eigen::Matrix3Xd result(3, Eigen::Index(normals.size()));
+        for (std::size_t i = 0; i < normals.size(); ++i) result.col(Eigen::Index(i)) = normals[i];
+        return result;
+    }
+
+    static Data make_data(Point_cloud<K> cloud, std::shared_ptr<const Proximity_graph> graph,
+                          std::shared_ptr<const Close_pairs_shortest_paths> cpsp, double sampling_radius,
+                          const Gaussian_weight& weight, Eigen::Matrix3Xd normals, Orientation_report orientation,
+                          bool normals_given, Preprocessing_times timings)
+    {
+        Geodesic_surface geodesic(Geodesic_distance<K>(cloud, cpsp), weight, normals);
+        Euclidean_surface euclidean(Euclidean_distance<K>(cloud), weight, std::move(normals));
+        return Data{std::move(cloud), std::move(graph), std::move(cpsp), sampling_radius, orientation,
+                    normals_given, timings, std::move(geodesic), std::move(euclidean)};
+    }
+
+    static std::shared_ptr<const Data> preprocess(Timed_cloud built, std::optional<Eigen::Matrix3Xd> given_normals,
+                                                  Point_cloud_object_options options)
+    {
+        Point_cloud<K>& cloud = built.cloud;
+        Preprocessing_times timings;
+        timings.kd_tree = built.milliseconds;
+        if (cloud.size() < 2)
+            throw Invalid_input("point cloud object: a surface needs at least two points, the cloud has one");
+        if (given_normals && std::size_t(given_normals->cols()) != cloud.size())
+            throw Invalid_input(internal::concat("point cloud object: ", given_normals->cols(), " normals for ",
+                                                 cloud.size(), " points"));
+
+        auto start = Clock::now();
+        options.sphere_of_influence.threads = options.knn.threads = options.sampling_radius.threads = options.threads;
+        auto graph = std::make_shared<const Proximity_graph>(options.graph == Graph_kind::knn
+                                                                 ? knn_graph(cloud, options.knn)
+                                                                 : sphere_of_influence_graph(cloud, options.sphere_of_influence));
+        timings.graph = ms_since(start);
+
+        start = Clock::now();
+        const double r = PCCD::sampling_radius(cloud, options.sampling_radius);
+        timings.sampling_radius = ms_since(start);
+        const Gaussian_weight weight = gaussian_weight(r, options.bandwidth);
+
+        start = Clock::now();
+        // The map must hold every point within the kernel's support radius R; its bound is
+        // support * r, so support = R / r (eta itself for the automatic bandwidth).
+        auto cpsp = std::make_shared<const Close_pairs_shortest_paths>(
+            *graph, r, Cpsp_options{.support = weight.support_radius() / r, .threads = options.threads});
+        timings.cpsp = ms_since(start);
+
+        start = Clock::now();
+        Normal_estimate estimate = estimate_normals(Geodesic_distance<K>(cloud, cpsp), weight, options.threads);
+        const Orientation_report orientation = given_normals
+                                                   ? orient_normals_like(estimate.normals, *given_normals)
+                                                   : orient_normals(*graph, cloud.coordinates(), estimate.normals);
+        timings.normals = ms_since(start);
+
+        return std::make_shared<const Data>(make_data(std::move(cloud), std::move(graph), std::move(cpsp), r, weight,
+                                                      std::move(estimate.normals), orientation,
+                                                      given_normals.has_value(), timings));
+    }
+
+    std::shared_ptr<const Data> m_data;
+};
+
+namespace internal {
+
+inline constexpr char object_magic[8] = {'P', 'C', 'C', 'D', 'O', 'B', 'J', '\0'};
+
+/// Appends raw bytes of trivially copyable values to a buffer.
+class Byte_writer {
+public:
+    template <class T>
+    void put(const T& value)
+    {
+        write(&value, sizeof value);
+    }
+    void write(const void* data, std::size_t size)
+    {
+        const auto* bytes = static_cast<const char*>(data);
+        m_bytes.insert(m_bytes.end(), bytes, bytes + size);
+    }
+    const std::string& bytes() const { return m_bytes; }
+
+private:
+    std::string m_bytes;
+};
+
+/// Reads raw bytes from a buffer, failing with File_error past its end.
+class Byte_reader {
+public:
+    Byte_reader(const std::string& path, const std::string& bytes) : m_path(path), m_bytes(bytes) {}
+    template <class T>
+    T get()
+    {
+        T value;
+        read(&value, sizeof value);
+        return value;
+    }
+    void read(void* data, std::size_t size)
+    {
+        if (m_bytes.size() - m_position < size) fail("truncated file");
+        std::memcpy(data, m_bytes.data() + m_position, size);
+        m_position += size;
+    }
+    std::size_t remaining() const { return m_bytes.size() - m_position; }
+    std::size_t position() const { return m_position; }
+    [[noreturn]] void fail(const std::string& problem) const { throw File_error(m_path, problem); }
+
+private:
+    std::string m_path;
+    const std::string& m_bytes;
+    std::size_t m_position = 0;
+};
+
+/// A scratch file removed when the object goes out of scope (the geodesic part of an object file
+/// goes through write_geodesic_data() / read_geodesic_data(), which work on paths).
+class Scratch_file {
+public:
+    explicit Scratch_file(std::filesystem::path path) : m_path(std::move(path)) {}
+    Scratch_file(const Scratch_file&) = delete;
+    Scratch_file& operator=(const Scratch_file&) = delete;
+    ~Scratch_file()
+    {
+        std::error_code ignored;
+        std::filesystem::remove(m_path, ignored);
+    }
+    std::string string() const { return m_path.string(); }
+
+private:
+    std::filesystem::path m_path;
+};
+
+inline std::filesystem::path scratch_path(const std::string& for_file)
+{
+    std::error_code error;
+    std::filesystem::path directory = std::filesystem::temp_directory_path(error);
+    if (error) directory = std::filesystem::path(for_file).parent_path();
+    const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
+    return directory / (std::filesystem::path(for_file).filename().string() + "." + std::to_string(stamp) + ".geo.tmp");
+}
+
+inline std::string read_binary_file(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw File_error(path, "cannot open the file: it does not exist or is not readable");
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+} // namespace internal
+
+// File format (version 1, native byte order checked by a mark, no padding):
+//   magic "PCCDOBJ\0" | u32 version | u32 byte-order mark | u64 N | f64 sampling radius
+//   f64 bandwidth h | f64 theta_eps | u8 normals given | u64 flipped, components, unoriented
+//   f64 timings[5] | f64 points[3N] | f64 normals[3N] | u64 G | G bytes: a geodesic file
+//   | u64 checksum (FNV-1a over 64-bit words of everything before it)
+template <PointCloudKernel K>
+void Point_cloud_object<K>::save(const std::string& path) const
+{
+    const Data& d = *m_data;
+    internal::Scratch_file scratch(internal::scratch_path(path));
+    write_geodesic_data(scratch.string(), *d.graph, *d.cpsp);
+    const std::string geodesic = internal::read_binary_file(scratch.string());
+
+    internal::Byte_writer out;
+    out.write(internal::object_magic, sizeof internal::object_magic);
+    out.put(file_version);
+    out.put(internal::byte_order_mark);
+    out.put(std::uint64_t(size()));
+    out.put(d.sampling_radius);
+    out.put(bandwidth());
+    out.put(theta_eps());
+    out.put(std::uint8_t(d.normals_given ? 1 : 0));
+    out.put(std::uint64_t(d.orientation.flipped));
+    out.put(std::uint64_t(d.orientation.components));
+    out.put(std::uint64_t(d.orientation.unoriented));
+    for (double t : {d.timings.kd_tree, d.timings.graph, d.timings.sampling_radius, d.timings.cpsp, d.timings.normals})
+        out.put(t);
+    const Eigen::Matrix3Xd points = d.cloud.coordinates().template cast<double>();
+    out.write(points.data(), sizeof(double) * std::size_t(points.size()));
+    out.write(normals().data(), sizeof(double) * std::size_t(normals().size()));
+    out.put(std::uint64_t(geodesic.size()));
+    out.write(geodesic.data(), geodesic.size());
+    internal::Word_checksum checksum;
+    checksum.update(out.bytes().data(), out.bytes().size());
+    out.put(checksum.value());
+
+    std::ofstream file(path, std::ios::binary | std::ios::trunc);
+    if (!file) throw File_error(path, "cannot open the file for writing");
+    file.write(out.bytes().data(), std::streamsize(out.bytes().size()));
+    file.close();
+    if (!file) throw File_error(path, "write failed (disk full?)");
+}
+
+template <PointCloudKernel K>
+Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path)
+{
+    const std::string bytes = internal::read_binary_file(path);
+    internal::Byte_reader in(path, bytes);
+    char magic[8];
+    in.read(magic, sizeof magic);
+    if (std::memcmp(magic, internal::object_magic, sizeof magic) != 0) in.fail("not a PCCD object file");
+    const auto version = in.get<std::uint32_t>();
+    if (version != file_version)
+        in.fail(internal::concat("object file format version ", version, ", this PCCD reads version ", file_version));
+    if (in.get<std::uint32_t>() != internal::byte_order_mark) in.fail("written on a machine of another byte order");
+    if (bytes.size() < sizeof(std::uint64_t)) in.fail("truncated file");
+    {
+        internal::Word_checksum checksum;
+        checksum.update(bytes.data(), bytes.size() - sizeof(std::uint64_t));
+        std::uint64_t stored;
+        std::memcpy(&stored, bytes.data() + bytes.size() - sizeof stored, sizeof stored);
+        if (stored != checksum.value()) in.fail("checksum mismatch: the file is truncated or corrupted");
+    }
+    const auto n = in.get<std::uint64_t>();
+    if (n < 2 || n >= std::uint64_t(std::numeric_limits<std::uint32_t>::max()) ||
+        in.remaining() < 6 * sizeof(double) * n)
+        in.fail(internal::concat("inconsistent point count ", n));
+    const auto r = in.get<double>();
+    const auto h = in.get<double>();
+    const auto theta = in.get<double>();
+    const bool given = in.get<std::uint8_t>() != 0;
+    Orientation_report orientation;
+    orientation.flipped = std::size_t(in.get<std::uint64_t>());
+    orientation.components = std::size_t(in.get<std::uint64_t>());
+    orientation.unoriented = std::size_t(in.get<std::uint64_t>());
+    Preprocessing_times timings;
+    for (double* t : {&timings.kd_tree, &timings.graph, &timings.sampling_radius, &timings.cpsp, &timings.normals})
+        *t = in.get<double>();
+    Eigen::Matrix3Xd points(3, Eigen::Index(n)), normals(3, Eigen::Index(n));
+    in.read(points.data(), sizeof(double) * 3 * n);
+    in.read(normals.data(), sizeof(double) * 3 * n);
+    const auto geodesic_size = in.get<std::uint64_t>();
+    if (in.remaining() != geodesic_size + sizeof(std::uint64_t))
+        in.fail("inconsistent size of the geodesic section");
+    if (!(std::isfinite(r) && r > 0.0)) in.fail(internal::concat("invalid sampling radius ", r));
+
+    internal::Scratch_file scratch(internal::scratch_path(path));
+    {
+        std::ofstream file(scratch.string(), std::ios::binary | std::ios::trunc);
+        file.write(bytes.data() + in.position(), std::streamsize(geodesic_size));
+        file.close();
+        if (!file) throw File_error(path, "cannot write a scratch file to read the geodesic section");
+    }
+    Geodesic_data geodesic;
+    try {
+        geodesic = read_geodesic_data(scratch.string());
+    } catch (const File_error& e) {
+        in.fail(internal::concat("geodesic section: ", e.what()));
+    }
+    if (geodesic.graph.num_vertices() != n || geodesic.cpsp.size() != n)
+        in.fail("the geodesic section does not have one vertex per point");
+
+    try {
+        const auto start = Clock::now();
+        Point_cloud<K> cloud(typename Point_cloud<K>::Coordinates(points.template cast<FT>()));
+        timings.kd_tree = ms_since(start);
+        const Gaussian_weight weight(h, theta);
+        auto cpsp = std::make_shared<const Close_pairs_shortest_paths>(std::move(geodesic.cpsp));
+        auto graph = std::make_shared<const Proximity_graph>(std::move(geodesic.graph));
+        return Point_cloud_object(std::make_shared<const Data>(make_data(std::move(cloud), std::move(graph),
+                                                                         std::move(cpsp), r, weight, std::move(normals),
+                                                                         orientation, given, timings)));
+    } catch (const File_error&) {
+        throw;
+    } catch (const Invalid_input& e) {
+        in.fail(internal::concat("inconsistent content: ", e.what()));
+    }
+}
+
+} // namespace PCCD

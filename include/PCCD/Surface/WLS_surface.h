@@ -1,0 +1,229 @@
+// PCCD/Surface/WLS_surface.h -- the implicit surface over a point cloud (ALGORITHMS.md section 1):
+// f(x) = n(x) . (x - a(x)), with a(x) the weighted mean of the cloud points near x, n(x) the
+// eigenvector of the smallest eigenvalue of their weighted covariance, oriented like the normal
+// stored at x's nearest cloud point. The distance (Euclidean or geodesic) and the weight (Gaussian
+// with bounded support) are policies. f is undefined far from the cloud, and says so.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <span>
+#include <utility>
+
+#include <Eigen/Core>
+
+#include <PCCD/Error.h>
+#include <PCCD/Surface/Gaussian_weight.h>
+#include <PCCD/Surface/internal/wls_fit.h>
+#include <PCCD/concepts/SurfaceDistance.h>
+#include <PCCD/concepts/SurfaceWeight.h>
+#include <PCCD/internal/parallel.h>
+
+namespace PCCD {
+
+/// What an evaluation of the implicit surface found.
+enum class Surface_status : std::uint8_t {
+    /// f, n and a are defined.
+    defined = 0,
+    /// No cloud point lies within the kernel's support (no weight >= theta_eps): f, n and a are
+    /// undefined. This is the state of every point far from the cloud.
+    outside_support = 1,
+    /// Some points carry weight, so a(x) is defined, but n(x) is not: fewer than three non-collinear
+    /// points (or an isotropic neighbourhood) leave the smallest eigenvector of B undetermined, or
+    /// the nearest cloud point has no normal to orient n(x) by.
+    degenerate = 2,
+};
+
+/// "defined", "outside_support" or "degenerate".
+inline const char* to_string(Surface_status status)
+{
+    switch (status) {
+    case Surface_status::defined: return "defined";
+    case Surface_status::outside_support: return "outside_support";
+    case Surface_status::degenerate: return "degenerate";
+    }
+    return "unknown";
+}
+
+/// One evaluation of the implicit surface at a point x. Fields that the status leaves undefined are
+/// NaN (never a fabricated 0).
+struct Surface_evaluation {
+    static constexpr std::uint32_t no_point = std::numeric_limits<std::uint32_t>::max();
+
+    Surface_status status = Surface_status::outside_support;
+    /// f(x) = n(x) . (x - a(x)); NaN unless defined.
+    double value = std::numeric_limits<double>::quiet_NaN();
+    /// n(x), unit length, oriented like the stored normal of `nearest`; NaN unless defined.
+    Eigen::Vector3d normal = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+    /// a(x), the weighted mean; NaN when outside_support.
+    Eigen::Vector3d centroid = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+    /// Sum of the weights (0 when outside_support).
+    double weight_sum = 0.0;
+    /// Number of cloud points with weight >= theta_eps.
+    std::uint32_t neighbor_count = 0;
+    /// The cloud point nearest to x (x's own index at a cloud point); no_point when outside_support.
+    std::uint32_t nearest = no_point;
+
+    bool defined() const { return status == Surface_status::defined; }
+    /// f(x) when defined, std::nullopt otherwise.
+    std::optional<double> value_if_defined() const { return defined() ? std::optional<double>(value) : std::nullopt; }
+};
+
+/// The implicit surface f(x) = n(x) . (x - a(x)) of a point cloud (ALGORITHMS.md section 1):
+///   a(x) = sum theta(d(x, p_i)) p_i / sum theta(d(x, p_i)),
+///   B(x) = sum theta(d(x, p_i)) (p_i - a(x)) (p_i - a(x))^T,  n(x) = eigenvector of B's smallest
+///   eigenvalue, with the sign of the normal stored at x's nearest cloud point.
+/// Only the points with d(x, p_i) <= weight.support_radius() take part.
+///
+/// \tparam Distance a model of SurfaceDistance: Euclidean_distance or Geodesic_distance.
+/// \tparam Weight a model of SurfaceWeight (Gaussian_weight by default).
+///
+/// The stored normals (one per cloud point) orient n(x); only their sign matters. Compute them with
+/// estimate_normals() and orient them with orient_normals() or orient_normals_like(), or let
+/// Point_cloud_object do all of it.
+///
+/// Immutable; copies are cheap (the normals are shared). Thread safety: every member function is
+/// const and safe to call concurrently.
+template <SurfaceDistance Distance, SurfaceWeight Weight = Gaussian_weight>
+class WLS_surface {
+public:
+    using Distance_policy = Distance;
+    using Weight_policy = Weight;
+    using Index = std::uint32_t;
+
+    /// \param normals 3 x N, column i the oriented normal of point i (N = distance.size()); a zero
+    ///        column means point i has no normal (evaluations whose nearest point it is are
+    ///        degenerate).
+    /// \throws Invalid_input if `normals` has the wrong size or a non-finite entry, or if the weight's
+    ///         support radius exceeds `distance.max_radius()` by more than a relative 1e-12 (e.g. a
+    ///         CPSP map built for a smaller bound than the kernel needs).
+    WLS_surface(Distance distance, Weight weight, Eigen::Matrix3Xd normals)
+        : m_distance(std::move(distance)),
+          m_weight(std::move(weight)),
+          m_support(double(m_weight.support_radius())),
+          m_normals(std::make_shared<const Eigen::Matrix3Xd>(std::move(normals)))
+    {
+        if (std::size_t(m_normals->cols()) != m_distance.size())
+            throw Invalid_input(internal::concat("WLS surface: ", m_normals->cols(), " normals given for ",
+                                                 m_distance.size(), " points"));
+        if (!m_normals->allFinite())
+            for (Eigen::Index i = 0; i < m_normals->cols(); ++i)
+                if (!m_normals->col(i).allFinite())
+                    throw Invalid_input(internal::concat("WLS surface: the normal of point ", i, " is not finite"));
+        if (!(std::isfinite(m_support) && m_support > 0.0))
+            throw Invalid_input(internal::concat("WLS surface: support radius ", m_support, " must be finite and > 0"));
+        // The relative slack absorbs rounding: h sqrt(-ln theta_eps) with h = eta r / sqrt(-ln theta_eps)
+        // may exceed eta r, the bound of a CPSP map, by an ulp.
+        if (m_support > double(m_distance.max_radius()) * (1.0 + 1e-12))
+            throw Invalid_input(internal::concat("WLS surface: the kernel's support radius ", m_support,
+                                                 " exceeds the largest radius the distance policy answers (",
+                                                 double(m_distance.max_radius()),
+                                                 "); build the geodesic map with a bound >= the support radius"));
+    }
+
+    /// \name Evaluation
+    /// @{
+
+    /// f, n and a at an arbitrary point x (see Surface_status for when they are undefined).
+    /// Complexity: that of `Distance::for_each_neighbor` (one kd-tree query) plus O(k) for the k
+    /// points in the support and O(1) for the 3 x 3 eigenproblem.
+    Surface_evaluation evaluate(const Eigen::Vector3d& x) const
+    {
+        internal::Wls_sums sums;
+        const std::optional<Index> nearest =
+            m_distance.for_each_neighbor(x, m_support, [&](Index j, double d) { add(sums, x, j, d); });
+        return finish(x, nearest, sums);
+    }
+
+    /// f, n and a at cloud point i. With Geodesic_distance this reads i's CPSP list only: O(k), no
+    /// kd-tree query. \pre i < size()
+    Surface_evaluation evaluate_at(Index i) const
+    {
+        PCCD_precondition_msg(i < size(), "WLS surface: point index out of range");
+        const Eigen::Vector3d x = m_distance.position(i);
+        internal::Wls_sums sums;
+        m_distance.for_each_neighbor_of_point(i, m_support, [&](Index j, double d) { add(sums, x, j, d); });
+        return finish(x, sums.count > 0 ? std::optional<Index>(i) : std::nullopt, sums);
+    }
+
+    /// f(x), or std::nullopt where it is undefined.
+    std::optional<double> value(const Eigen::Vector3d& x) const { return evaluate(x).value_if_defined(); }
+    /// f(p_i), or std::nullopt where it is undefined. \pre i < size()
+    std::optional<double> value_at(Index i) const { return evaluate_at(i).value_if_defined(); }
+
+    /// Evaluates every point of `points` into `out` (out[k] for points[k]), in parallel when TBB is
+    /// available (`threads` workers, 0: all). \pre out.size() == points.size()
+    void evaluate(std::span<const Eigen::Vector3d> points, std::span<Surface_evaluation> out, unsigned threads = 0) const
+    {
+        PCCD_precondition_msg(out.size() == points.size(), "WLS surface: batch output size differs from input size");
+        for_blocks(points.size(), threads, [&](std::size_t k) { out[k] = evaluate(points[k]); });
+    }
+
+    /// Evaluates every cloud point of `indices` into `out`. \pre out.size() == indices.size() and
+    /// every index < size()
+    void evaluate_at(std::span<const Index> indices, std::span<Surface_evaluation> out, unsigned threads = 0) const
+    {
+        PCCD_precondition_msg(out.size() == indices.size(), "WLS surface: batch output size differs from input size");
+        for_blocks(indices.size(), threads, [&](std::size_t k) { out[k] = evaluate_at(indices[k]); });
+    }
+    /// @}
+
+    /// \name Access
+    /// @{
+    std::size_t size() const { return m_distance.size(); }
+    const Distance& distance() const { return m_distance; }
+    const Weight& weight() const { return m_weight; }
+    /// The support radius R: only points with d(x, p) <= R take part.
+    double support_radius() const { return m_support; }
+    /// The stored (oriented) normals, 3 x N.
+    const Eigen::Matrix3Xd& normals() const { return *m_normals; }
+    /// @}
+
+private:
+    void add(internal::Wls_sums& sums, const Eigen::Vector3d& x, Index j, double d) const
+    {
+        sums.add(m_distance.position(j) - x, double(m_weight(d)));
+    }
+
+    Surface_evaluation finish(const Eigen::Vector3d& x, std::optional<Index> nearest,
+                              const internal::Wls_sums& sums) const
+    {
+        Surface_evaluation result;
+        if (!nearest || sums.count == 0 || !(sums.weight > 0.0)) return result;
+        result.nearest = *nearest;
+        result.neighbor_count = sums.count;
+        result.weight_sum = sums.weight;
+        const internal::Wls_fit fit = internal::finish_fit(x, sums);
+        result.centroid = fit.centroid;
+        const Eigen::Vector3d reference = m_normals->col(Eigen::Index(*nearest));
+        if (!fit.determined || reference.isZero(0.0)) {
+            result.status = Surface_status::degenerate;
+            return result;
+        }
+        result.status = Surface_status::defined;
+        result.normal = fit.normal.dot(reference) < 0.0 ? Eigen::Vector3d(-fit.normal) : fit.normal;
+        result.value = result.normal.dot(x - fit.centroid);
+        return result;
+    }
+
+    template <class Body>
+    static void for_blocks(std::size_t n, unsigned threads, const Body& body)
+    {
+        internal::with_threads(threads, [&] {
+            internal::parallel_for_ranges(n, 256, [&](std::size_t begin, std::size_t end) {
+                for (std::size_t k = begin; k < end; ++k) body(k);
+            });
+        });
+    }
+
+    Distance m_distance;
+    Weight m_weight;
+    double m_support;
+    std::shared_ptr<const Eigen::Matrix3Xd> m_normals;
+};
+
+} // namespace PCCD

@@ -1,0 +1,69 @@
+// PCCD/Surface/estimate_normals.h -- the unoriented WLS normal n(p_i) at every point of a cloud
+// (ALGORITHMS.md section 1), the raw material of normal orientation: the same fit as WLS_surface,
+// evaluated at the cloud points themselves.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include <Eigen/Core>
+
+#include <PCCD/Error.h>
+#include <PCCD/Surface/internal/wls_fit.h>
+#include <PCCD/concepts/SurfaceDistance.h>
+#include <PCCD/concepts/SurfaceWeight.h>
+#include <PCCD/internal/parallel.h>
+
+namespace PCCD {
+
+/// Unoriented normals of a cloud.
+struct Normal_estimate {
+    /// 3 x N: column i is the unit eigenvector of the smallest eigenvalue of B(p_i), with the
+    /// eigen-solver's arbitrary sign, or zero where the fit does not determine it.
+    Eigen::Matrix3Xd normals;
+    /// Number of points whose normal is undetermined (zero columns): isolated points or points whose
+    /// weighted neighbours are collinear.
+    std::size_t undetermined = 0;
+};
+
+/// The WLS normal n(p_i) of every cloud point, before orientation.
+///
+/// \tparam Distance a model of SurfaceDistance.
+/// \tparam Weight a model of SurfaceWeight.
+/// \param threads worker threads (0: all available); ignored without TBB. The result does not
+///        depend on it.
+/// \throws Invalid_input if the weight's support radius exceeds `distance.max_radius()` (beyond a
+///         relative 1e-12 of rounding).
+/// Complexity: N neighbour enumerations (O(N k) with a CPSP map). Thread safety: reads its
+/// arguments only.
+template <SurfaceDistance Distance, SurfaceWeight Weight>
+Normal_estimate estimate_normals(const Distance& distance, const Weight& weight, unsigned threads = 0)
+{
+    const double support = double(weight.support_radius());
+    if (support > double(distance.max_radius()) * (1.0 + 1e-12))
+        throw Invalid_input(internal::concat("estimate_normals: the kernel's support radius ", support,
+                                             " exceeds the largest radius the distance policy answers (",
+                                             double(distance.max_radius()), ")"));
+    const std::size_t n = distance.size();
+    Normal_estimate result{Eigen::Matrix3Xd::Zero(3, Eigen::Index(n)), 0};
+    internal::with_threads(threads, [&] {
+        internal::parallel_for_ranges(n, 256, [&](std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) {
+                const auto index = static_cast<std::uint32_t>(i);
+                const Eigen::Vector3d x = distance.position(index);
+                internal::Wls_sums sums;
+                distance.for_each_neighbor_of_point(index, support, [&](std::uint32_t j, double d) {
+                    sums.add(distance.position(j) - x, double(weight(d)));
+                });
+                if (sums.count == 0 || !(sums.weight > 0.0)) continue;
+                const internal::Wls_fit fit = internal::finish_fit(x, sums);
+                if (fit.determined) result.normals.col(Eigen::Index(i)) = fit.normal;
+            }
+        });
+    });
+    for (Eigen::Index i = 0; i < result.normals.cols(); ++i)
+        if (result.normals.col(i).isZero(0.0)) ++result.undetermined;
+    return result;
+}
+
+} // namespace PCCD
