@@ -87,7 +87,7 @@ TEST_CASE("CPSP lists equal BGL's full Dijkstra within the bound", "[graph][geod
         const Fixture f = make_fixture(make());
         const PCCD::Close_pairs_shortest_paths map(f.graph, f.radius);
         REQUIRE(map.size() == f.cloud.size());
-        CHECK(map.bound() == Approx(4.0 * f.radius));
+        CHECK(map.bound() == Approx(PCCD::Cpsp_options{}.support * f.radius));
         const List_graph list = surface_edges(f.graph);
         std::vector<double> full(f.cloud.size());
         std::size_t entries = 0;

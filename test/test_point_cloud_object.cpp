@@ -12,6 +12,12 @@
 
 using namespace pccd_test;
 
+TEST_CASE("the CPSP map's default bound is the surface's default support", "[surface]")
+{
+    // A map built with Cpsp_options{} serves a surface with the default bandwidth options.
+    CHECK(PCCD::Cpsp_options{}.support == PCCD::Bandwidth_options{}.eta);
+}
+
 TEST_CASE("a point cloud object reports its preprocessed state", "[surface]")
 {
     const auto sample = sample_shape(test_torus(), 3000, 0.1, 91);
