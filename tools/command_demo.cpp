@@ -1,15 +1,18 @@
 // pccd demo: a tour of PCCD on built-in data (the scanned bunny, or the procedural torus when
-// libcgal-demo is absent): sampling, the point cloud and its kd-tree, and benchmark poses.
+// libcgal-demo is absent): sampling, the point cloud and its kd-tree, the preprocessed object
+// (proximity graph, CPSP map, oriented normals) and its implicit surface, and benchmark poses.
 #include "commands.h"
 #include "demo_data.h"
 
 #include <PCCD/Point_cloud.h>
+#include <PCCD/Point_cloud_object.h>
 #include <PCCD/Sampling/pose_generator.h>
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <vector>
 
 namespace pccd_tool {
 namespace {
@@ -50,6 +53,40 @@ void run_demo(const Demo_options& options)
     std::printf("  5 nearest points to the origin:");
     for (const auto& n : nearest) std::printf(" %u (%.4f)", n.index, std::sqrt(n.squared_distance));
     std::printf("\n");
+
+    start = Clock::now();
+    std::vector<Eigen::Vector3d> points(std::size_t(object.points.cols()));
+    for (std::size_t i = 0; i < points.size(); ++i) points[i] = object.points.col(Eigen::Index(i));
+    const PCCD::Point_cloud_object<> object_state(points);
+    const auto& t = object_state.timings();
+    std::printf("preprocessed object in %.0f ms (graph %.0f, r(P) %.0f, CPSP %.0f, normals %.0f)\n", ms_since(start),
+                t.graph, t.sampling_radius, t.cpsp, t.normals);
+    std::printf("  %s graph: %zu edges (%zu virtual), sampling radius r(P) = %.5f\n",
+                PCCD::to_string(object_state.graph().kind(), object_state.graph().parameter()).c_str(),
+                object_state.graph().num_edges(), object_state.graph().num_virtual_edges(),
+                object_state.sampling_radius());
+    std::printf("  bandwidth h = %.5f (eta %.1f, theta_eps %.0e), %zu CPSP entries\n", object_state.bandwidth(),
+                object_state.eta(), object_state.theta_eps(), object_state.cpsp().num_entries());
+
+    // f at points pushed off the surface along the sampled (true) normals: its sign says the side and
+    // its value the distance, measured against the offset.
+    std::printf("implicit surface f(x) = n(x).(x - a(x)) at x = p + s n(p), s in spacings:\n");
+    const double spacing = cloud.mean_spacing();
+    for (const double s : {-2.0, -1.0, 0.0, 1.0, 2.0}) {
+        double sum = 0.0;
+        int defined = 0;
+        const int probes = 200;
+        for (int i = 0; i < probes; ++i) {
+            const Eigen::Index k = Eigen::Index(i) * (object.points.cols() / probes);
+            const Eigen::Vector3d x = object.points.col(k) + s * spacing * object.normals.col(k);
+            if (const auto f = object_state.surface().value(x)) {
+                sum += *f / spacing;
+                ++defined;
+            }
+        }
+        std::printf("  s = %+.0f: mean f = %+.3f spacings over %d defined of %d probes\n", s,
+                    defined > 0 ? sum / defined : 0.0, defined, probes);
+    }
 
     const auto poses = PCCD::generate_benchmark_poses({.distances = {0.0, 1.0, 2.0}, .rotations_per_distance = 1,
                                                        .seed = options.seed});
