@@ -184,6 +184,69 @@ TEST_CASE("piecewise-linear crossings at key frames are found exactly once", "[k
     }
 }
 
+namespace {
+
+/// The key scan of Piecewise_linear_flightplan::next_crossing for shared key times, key by key
+/// without skipping blocks: the reference for the block skipping.
+double plain_key_scan(const std::vector<double>& ts, const std::vector<Eigen::Vector3d>& a,
+                      const std::vector<Eigen::Vector3d>& b, int axis, double t)
+{
+    std::size_t k = std::size_t(std::upper_bound(ts.begin(), ts.end(), t) - ts.begin());
+    double d0 = a[k == 0 ? 0 : k - 1][axis] - b[k == 0 ? 0 : k - 1][axis];
+    if (k == 0) {
+        if (d0 < 0.0) return t;
+        k = 1;
+    }
+    for (; k < ts.size(); ++k) {
+        const double d1 = a[k][axis] - b[k][axis];
+        if (d0 >= 0.0 && d1 >= 0.0) {
+            d0 = d1;
+            continue;
+        }
+        const double lo = ts[k - 1], hi = ts[k];
+        if (d0 < 0.0 && d1 < 0.0) return std::max(lo, t);
+        const double root = lo + (hi - lo) * (d0 / (d0 - d1));
+        if (d0 >= 0.0) {
+            if (hi > t) return std::max(root, t);
+        } else if (root > t) {
+            return std::max(lo, t);
+        }
+        d0 = d1;
+    }
+    return d0 < 0.0 ? std::max(ts.back(), t) : inf;
+}
+
+} // namespace
+
+TEST_CASE("piecewise-linear key scan skipping separated blocks equals the plain scan", "[kinetic][flightplan]")
+{
+    // Long animations alternating stretches where the two flightplans are far apart (whole blocks
+    // skipped) with stretches of near-ties and crossings, at query times on and between keys.
+    PCCD::Random_engine rng(31);
+    for (int trial = 0; trial < 200; ++trial) {
+        const std::size_t keys = 20 + PCCD::uniform_index(rng, 300);
+        const auto ts = std::make_shared<std::vector<double>>(keys);
+        std::vector<Eigen::Vector3d> pa(keys), pb(keys);
+        double gap = 1.0;
+        for (std::size_t k = 0; k < keys; ++k) {
+            (*ts)[k] = 0.5 * double(k);
+            if (PCCD::uniform_index(rng, 12) == 0) gap = PCCD::uniform_index(rng, 3) == 0 ? 0.0 : 2.0 * PCCD::uniform_real(rng, -1.0, 1.0);
+            for (int axis = 0; axis < 3; ++axis) {
+                pb[k][axis] = PCCD::uniform_real(rng, -0.5, 0.5);
+                pa[k][axis] = pb[k][axis] + gap + (axis == 2 ? 0.0 : PCCD::uniform_real(rng, -0.3, 0.3));
+            }
+        }
+        const Piecewise_linear_flightplan a(ts, pa), b(ts, pb);
+        for (int q = 0; q < 40; ++q) {
+            const double t = q % 4 == 0 ? (*ts)[PCCD::uniform_index(rng, keys)] : PCCD::uniform_real(rng, -1.0, 0.5 * double(keys));
+            for (int axis = 0; axis < 3; ++axis) {
+                CHECK(a.next_crossing(b, axis, t) == plain_key_scan(*ts, pa, pb, axis, t));
+                CHECK(b.next_crossing(a, axis, t) == plain_key_scan(*ts, pb, pa, axis, t));
+            }
+        }
+    }
+}
+
 TEST_CASE("piecewise-linear flightplans with different key times match dense sampling", "[kinetic][flightplan]")
 {
     PCCD::Random_engine rng(23);

@@ -203,3 +203,57 @@ TEST_CASE("point clouds: proximity pairs with a margin and the traversal hook", 
     CHECK_THROWS_AS(a.overlapping_pairs(b, out), PCCD::Invalid_input);
     CHECK_THROWS_AS(a.self_overlapping_pairs(out, -1.0), PCCD::Invalid_input);
 }
+
+TEST_CASE("memoized queries give exactly the answers of the uncached traversal", "[kinetic][query]")
+{
+    // The tree's queries read positions through a per-query memo; the internal traversals run on
+    // the tree itself evaluate box() and vertex_position() afresh at every visit. Same pairs, in the
+    // same order, same ray hit bit for bit.
+    const auto scene = PCCD::make_cloth_scene({.triangles = 400, .duration = 1.5, .tilt_degrees = 0.0, .air_damping = 2.0});
+    using Tree = PCCD::Kinetic_AABB_tree<PCCD::Piecewise_linear_flightplan>;
+    Tree cloth(scene.flightplans, scene.primitives);
+    Tree table(scene.obstacle_flightplans, scene.obstacle_triangles);
+    PCCD::Refit_AABB_tree<PCCD::Piecewise_linear_flightplan> table_refit(scene.obstacle_flightplans,
+                                                                         scene.obstacle_triangles);
+    PCCD::Random_engine rng(23);
+    std::size_t pairs = 0, hits = 0;
+    for (int k = 0; k < 40; ++k) {
+        const double t = PCCD::uniform_real(rng, 0.0, 1.5);
+        cloth.advance_to(t);
+        table.advance_to(t);
+        table_refit.advance_to(t);
+        Pairs memo, plain;
+        cloth.overlapping_pairs(table, memo, 0.01);
+        PCCD::internal::overlapping_pairs(cloth, table, 0.01, plain);
+        CHECK(memo == plain);
+        pairs += memo.size();
+        cloth.overlapping_pairs(table_refit, memo, 0.01);
+        CHECK(memo == plain);
+        cloth.self_overlapping_pairs(memo);
+        PCCD::internal::self_overlapping_pairs(cloth, 0.0, plain);
+        CHECK(memo == plain);
+        const Eigen::AlignedBox3d range(Eigen::Vector3d(-0.5, -0.5, -0.3), Eigen::Vector3d(0.3, 0.4, 0.2));
+        std::vector<std::uint32_t> memo_hits, plain_hits;
+        cloth.range_query(range, memo_hits);
+        PCCD::internal::range_query(cloth, range, plain_hits);
+        CHECK(memo_hits == plain_hits);
+        const PCCD::Kinetic_ray down{Eigen::Vector3d(PCCD::uniform_real(rng, -0.8, 0.8), PCCD::uniform_real(rng, -0.8, 0.8), 1.0),
+                                     -Eigen::Vector3d::UnitZ()};
+        const auto memo_hit = cloth.first_hit(down);
+        const auto plain_hit = PCCD::internal::first_hit(cloth, down);
+        REQUIRE(memo_hit.has_value() == plain_hit.has_value());
+        if (memo_hit) {
+            ++hits;
+            CHECK(memo_hit->primitive == plain_hit->primitive);
+            CHECK(memo_hit->s == plain_hit->s);
+            CHECK(memo_hit->u == plain_hit->u);
+            CHECK(memo_hit->v == plain_hit->v);
+        }
+        // Memoized positions equal the flightplans' coordinates at now(), bit for bit.
+        for (std::uint32_t v = 0; v < cloth.vertex_count(); v += 7)
+            for (int axis = 0; axis < 3; ++axis)
+                CHECK(cloth.vertex_position(v)[axis] == cloth.flightplan(v).coordinate(axis, t));
+    }
+    CHECK(pairs > 100);
+    CHECK(hits > 10);
+}

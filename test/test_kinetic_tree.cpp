@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <set>
 #include <string>
 #include <utility>
@@ -122,6 +123,35 @@ TEST_CASE("kinetic tree equals brute force at 1000 random times: cloth", "[kinet
     const auto scene = PCCD::make_cloth_scene({.triangles = 300, .duration = 1.5});
     REQUIRE(std::abs(double(scene.primitives.size()) - 300.0) <= 15.0);
     check_scene_at_random_times(scene, 1);
+}
+
+TEST_CASE("cloth scene: level or tilted start", "[kinetic][tree]")
+{
+    // Level: one height for all particles (exact ties). Tilted by 5 degrees: the height is linear in
+    // the horizontal position, with slope tan(5 degrees), centred on drop_height.
+    const auto level = PCCD::make_cloth_scene({.triangles = 200, .duration = 0.1, .tilt_degrees = 0.0});
+    for (const auto& f : level.flightplans) CHECK(f.position(0.0).z() == 0.3);
+    const auto tilted = PCCD::make_cloth_scene({.triangles = 200, .duration = 0.1});
+    double low = 1e9, high = -1e9, mean = 0.0;
+    for (const auto& f : tilted.flightplans) {
+        const Eigen::Vector3d p = f.position(0.0);
+        const double expected = 0.3 + std::tan(5.0 * std::numbers::pi / 180.0) * (std::cos(std::numbers::pi / 6) * p.x() + std::sin(std::numbers::pi / 6) * p.y());
+        CHECK(p.z() == Approx(expected).margin(1e-12));
+        low = std::min(low, p.z());
+        high = std::max(high, p.z());
+        mean += p.z() / double(tilted.flightplans.size());
+    }
+    CHECK(high - low > 0.1);
+    CHECK(mean == Approx(0.3).margin(1e-9));
+    CHECK_THROWS_AS(PCCD::make_cloth_scene({.triangles = 200, .tilt_degrees = 90.0}), PCCD::Invalid_input);
+}
+
+TEST_CASE("kinetic tree equals brute force at 1000 random times: lightly damped cloth", "[kinetic][tree]")
+{
+    // The former default cloth: dropped level (exact height ties) with air drag 2/s, it keeps
+    // swinging, and many more near-ties swap.
+    const auto scene = PCCD::make_cloth_scene({.triangles = 300, .duration = 1.5, .tilt_degrees = 0.0, .air_damping = 2.0});
+    check_scene_at_random_times(scene, 11);
 }
 
 TEST_CASE("kinetic tree equals brute force at 1000 random times: deforming cloud", "[kinetic][tree]")
@@ -368,7 +398,7 @@ TEST_CASE("exact ties and simultaneous events are deterministic", "[kinetic][tre
 
     SECTION("the cloth's exact height ties give the same result twice")
     {
-        const auto scene = PCCD::make_cloth_scene({.triangles = 128, .duration = 1.0});
+        const auto scene = PCCD::make_cloth_scene({.triangles = 128, .duration = 1.0, .tilt_degrees = 0.0});
         auto trace = [&]() {
             PCCD::Kinetic_AABB_tree<PCCD::Piecewise_linear_flightplan> tree(scene.flightplans, scene.primitives);
             tree.advance_to(1.0);

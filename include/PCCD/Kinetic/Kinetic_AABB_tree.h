@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -55,6 +56,12 @@ struct Kinetic_statistics {
 /// allowed: an extreme is any vertex attaining the bound. Simultaneous events are processed in
 /// order of (node, bound), so the structure after advance_to(t) is a deterministic function of the
 /// inputs.
+///
+/// Queries memoize vertex positions and node boxes at now() in tables owned by the query call (each
+/// vertex's flightplan is evaluated at most once per query, however many node boxes it bounds, and
+/// each node box is assembled at most once, however many node pairs it enters), so they give the
+/// same answers as box() and vertex_position() without any mutable state in the tree (provided the
+/// flightplan's position(t)[axis] equals coordinate(axis, t), as in all models shipped, bit for bit).
 ///
 /// Thread safety: const members (access and queries) may run concurrently; advance_to,
 /// set_flightplan, insert and remove need exclusive access.
@@ -331,22 +338,25 @@ public:
     void overlapping_pairs(const Tree& other, std::vector<std::pair<Index, Index>>& out, double margin = 0.0) const
     {
         check_query(other.now(), margin);
-        internal::overlapping_pairs(*this, other, margin, out);
+        internal::overlapping_pairs(Query_view(*this), query_view_of(other), margin, out);
     }
     /// Pairs i < j of non-adjacent primitives (sharing no vertex) whose boxes, grown by `margin`,
     /// overlap. \throws Invalid_input if margin < 0.
     void self_overlapping_pairs(std::vector<std::pair<Index, Index>>& out, double margin = 0.0) const
     {
         check_query(m_now, margin);
-        internal::self_overlapping_pairs(*this, margin, out);
+        internal::self_overlapping_pairs(Query_view(*this), margin, out);
     }
     /// Primitives whose boxes overlap the closed box `query`.
-    void range_query(const Box& query, std::vector<Index>& out) const { internal::range_query(*this, query, out); }
+    void range_query(const Box& query, std::vector<Index>& out) const
+    {
+        internal::range_query(Query_view(*this), query, out);
+    }
     /// The first triangle hit by `ray` (smallest parameter, then smallest index).
     std::optional<Kinetic_ray_hit> first_hit(const Kinetic_ray& ray) const
         requires(P::vertex_count == 3)
     {
-        return internal::first_hit(*this, ray);
+        return internal::first_hit(Query_view(*this), ray);
     }
     /// Simultaneous traversal with `other`: `descend(node_a, node_b, box_a, box_b) -> bool` opens a
     /// node pair, `on_leaf_pair(node_a, node_b)` receives the leaf pairs it lets through. This is
@@ -355,11 +365,74 @@ public:
     void traverse(const Tree& other, Descend&& descend, OnLeafPair&& on_leaf_pair) const
     {
         check_query(other.now(), 0.0);
-        internal::traverse_pairs(*this, m_root, other, other.root(), descend, on_leaf_pair);
+        internal::traverse_pairs(Query_view(*this), m_root, query_view_of(other), other.root(), descend, on_leaf_pair);
     }
     /// @}
 
 private:
+    template <Flightplan, KineticPrimitive, class>
+    friend class Kinetic_AABB_tree;
+
+    /// The tree as one query reads it: the same nodes and primitives, with vertex positions and
+    /// node boxes at now() computed on first use and memoized for the rest of the query. Lives on
+    /// the querying thread's stack, so concurrent queries share nothing mutable. Construction
+    /// zeroes one flag byte per vertex and per node (positions and boxes are written before they
+    /// are read).
+    class Query_view {
+    public:
+        explicit Query_view(const Kinetic_AABB_tree& tree)
+            : m_tree(tree), m_evaluated(tree.m_flightplans.size(), 0),
+              m_positions(std::make_unique_for_overwrite<Eigen::Vector3d[]>(tree.m_flightplans.size())),
+              m_boxed(tree.m_nodes.size(), 0), m_boxes(std::make_unique_for_overwrite<Box[]>(tree.m_nodes.size()))
+        {
+        }
+        Node_index root() const { return m_tree.m_root; }
+        bool is_leaf(Node_index n) const { return m_tree.m_nodes[n].is_leaf(); }
+        Node_index left(Node_index n) const { return m_tree.m_nodes[n].left; }
+        Node_index right(Node_index n) const { return m_tree.m_nodes[n].right; }
+        Index leaf_primitive(Node_index n) const { return m_tree.m_nodes[n].primitive; }
+        const P& primitive(Index i) const { return m_tree.m_primitives[i]; }
+        const Eigen::Vector3d& vertex_position(Index v) const
+        {
+            if (!m_evaluated[v]) {
+                m_positions[v] = m_tree.m_flightplans[v].position(m_tree.m_now);
+                m_evaluated[v] = 1;
+            }
+            return m_positions[v];
+        }
+        /// Equal to the tree's box(n).
+        const Box& box(Node_index n) const
+        {
+            Box& result = m_boxes[n];
+            if (!m_boxed[n]) {
+                const std::array<Index, bound_count>& e = m_tree.m_extreme[n];
+                for (int axis = 0; axis < 3; ++axis) {
+                    result.min()[axis] = vertex_position(e[std::size_t(axis)])[axis];
+                    result.max()[axis] = vertex_position(e[std::size_t(axis + 3)])[axis];
+                }
+                m_boxed[n] = 1;
+            }
+            return result;
+        }
+
+    private:
+        const Kinetic_AABB_tree& m_tree;
+        mutable std::vector<char> m_evaluated;
+        std::unique_ptr<Eigen::Vector3d[]> m_positions;
+        mutable std::vector<char> m_boxed;
+        std::unique_ptr<Box[]> m_boxes;
+    };
+
+    /// `other` as a query reads it: a Query_view for a kinetic tree, the tree itself otherwise.
+    template <class Tree>
+    static decltype(auto) query_view_of(const Tree& other)
+    {
+        if constexpr (requires { typename Tree::Event_queue_type; })
+            return typename Tree::Query_view(other);
+        else
+            return (other);
+    }
+
     static std::array<Index, bound_count> unset_extremes()
     {
         std::array<Index, bound_count> e;

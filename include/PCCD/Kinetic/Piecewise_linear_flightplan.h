@@ -52,6 +52,17 @@ public:
                 throw Invalid_input(internal::concat("Piecewise_linear_flightplan: key position ", k,
                                                      " is not finite"));
         }
+        const std::size_t blocks = (ts.size() + block_size - 1) / block_size;
+        m_blocks.resize(blocks);
+        for (std::size_t j = 0; j < blocks; ++j) {
+            const std::size_t end = std::min(ts.size(), (j + 1) * block_size);
+            Block& block = m_blocks[j];
+            block.min = block.max = m_positions[j * block_size];
+            for (std::size_t k = j * block_size + 1; k < end; ++k) {
+                block.min = block.min.cwiseMin(m_positions[k]);
+                block.max = block.max.cwiseMax(m_positions[k]);
+            }
+        }
     }
 
     /// Convenience: copies `times` into a new shared vector.
@@ -68,15 +79,27 @@ public:
         if (k == m_positions.size()) return m_positions.back()[axis];
         return slope(k, axis) * (t - (*m_times)[k - 1]) + m_positions[k - 1][axis];
     }
-    /// Position at time t. As coordinate().
-    Eigen::Vector3d position(double t) const { return {coordinate(0, t), coordinate(1, t), coordinate(2, t)}; }
+    /// Position at time t. As coordinate() (bit for bit), with one key look-up for the three axes.
+    Eigen::Vector3d position(double t) const
+    {
+        const std::size_t k = piece_at(t);
+        if (k == 0) return m_positions.front();
+        if (k == m_positions.size()) return m_positions.back();
+        const double dt = (*m_times)[k] - (*m_times)[k - 1], s = t - (*m_times)[k - 1];
+        Eigen::Vector3d p;
+        for (int axis = 0; axis < 3; ++axis)
+            p[axis] = (m_positions[k][axis] - m_positions[k - 1][axis]) / dt * s + m_positions[k - 1][axis];
+        return p;
+    }
 
     /// inf{ s > t : coordinate(axis, s) < other.coordinate(axis, s) } or +infinity.
     /// O(log K + number of merged key intervals scanned until the crossing). When both flightplans
     /// share their key times (as in recorded scenes) the scan compares key positions only: a key
     /// interval whose two end differences are >= 0 holds no crossing, and the crossing inside an
     /// interval with a sign change is the root of the line through them (computed the same way for
-    /// both orders of the two flightplans, so their crossings coincide bit for bit).
+    /// both orders of the two flightplans, so their crossings coincide bit for bit). Blocks of
+    /// block_size keys where this flightplan's smallest key coordinate is >= the other's largest
+    /// are skipped whole: every difference in them is >= 0, so the result is that of the plain scan.
     double next_crossing(const Piecewise_linear_flightplan& other, int axis, double t) const
     {
         if (m_times != other.m_times) return internal::next_crossing(*this, other, axis, t);
@@ -90,6 +113,15 @@ public:
             k = 1;
         }
         for (; k < keys; ++k) {
+            if (k % block_size == 0 && d0 >= 0.0) {
+                std::size_t j = k / block_size;
+                while (j < m_blocks.size() && m_blocks[j].min[axis] >= other.m_blocks[j].max[axis]) ++j;
+                if (j * block_size > k) {
+                    k = std::min(j * block_size, keys);
+                    d0 = m_positions[k - 1][axis] - other.m_positions[k - 1][axis];
+                    if (k == keys) break;
+                }
+            }
             const double d1 = m_positions[k][axis] - other.m_positions[k][axis];
             if (d0 >= 0.0 && d1 >= 0.0) {
                 d0 = d1;
@@ -145,6 +177,9 @@ public:
     /// \endcond
 
 private:
+    /// Keys per block of the per-axis key bounds that next_crossing skips by.
+    static constexpr std::size_t block_size = 8;
+
     double slope(std::size_t k, int axis) const
     {
         return (m_positions[k][axis] - m_positions[k - 1][axis]) / ((*m_times)[k] - (*m_times)[k - 1]);
@@ -152,6 +187,11 @@ private:
 
     Key_times m_times;
     std::vector<Eigen::Vector3d> m_positions;
+    /// The smallest and largest key coordinates of a block of block_size consecutive keys.
+    struct Block {
+        Eigen::Vector3d min, max;
+    };
+    std::vector<Block> m_blocks;
 };
 
 } // namespace PCCD
