@@ -1,6 +1,6 @@
 // Accuracy of the implicit surface against the exact signed distance as a function of the kernel
 // parameters eta and theta_eps (ALGORITHMS.md section 1), the measurement behind the defaults in
-// PCCD/Surface/bandwidth.h (table in doc/manual-surface.md, "Choosing eta and theta_eps").
+// PCCD/Surface/bandwidth.h (table in doc/manual/surface.md, "Choosing eta and theta_eps").
 //
 // Usage: surface_parameters [eta theta_eps]  (default: the grid eta 1.5..3 x theta_eps 1e-2..1e-4)
 // For sphere (radius 1), torus (1, 0.4) and plane patch (2 x 2), N = 4000 and 16000, noise 0 and 0.2

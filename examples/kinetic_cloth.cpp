@@ -1,5 +1,5 @@
 // A table cloth falls onto a table: a kinetic AABB tree follows it through events and answers a
-// collision query and a ray query at 30 frames per second (doc/manual-kinetic.md).
+// collision query and a ray query at 30 frames per second (doc/manual/kinetic.md).
 #include <PCCD/Kinetic/Kinetic_AABB_tree.h>
 #include <PCCD/Kinetic/Piecewise_linear_flightplan.h>
 #include <PCCD/Kinetic/Scenes/Cloth_scene.h>

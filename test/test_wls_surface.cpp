@@ -6,7 +6,7 @@
 // (2 x 2), N = 4000 and 16000 points, noise sigma = 0 and 0.2 * 0.5 sqrt(area / N). s is the cloud's
 // mean spacing, R the kernel's support radius, rho the smallest radius of curvature.
 //
-// Tolerance, measured (doc/manual-surface.md, "Accuracy"): for queries within 2 s of the surface
+// Tolerance, measured (doc/manual/surface.md, "Accuracy"): for queries within 2 s of the surface
 //   tol0 = 0.05 s + 0.25 R^2 / rho            (WLS bias on curved surfaces; 0.05 s on the plane)
 //   noise-free, both kernels:  max |f - d| <= tol0
 //   noisy, Euclidean kernel:   max |f - d| <= tol0 + 2 sigma

@@ -11,7 +11,7 @@
 
 namespace PCCD {
 
-/// How the Gaussian kernel of the surface is chosen. Defaults measured in doc/manual-surface.md
+/// How the Gaussian kernel of the surface is chosen. Defaults measured in doc/manual/surface.md
 /// ("Choosing eta and theta_eps").
 struct Bandwidth_options {
     /// eta: the support radius in units of the sampling radius r(P), independent of the sampling
