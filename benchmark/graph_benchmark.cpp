@@ -3,7 +3,7 @@
 // Figures in doc/benchmarks.md, section "Proximity graphs and CPSP map". CSV on stdout.
 //
 //   graph_benchmark timing [--sizes 10000,100000,1000000] [--repeats 3] [--threads 1,2] [--r 3]
-//                          [--support 4] [--dijkstra hand,boost] [--factor 4] [--seed 1]
+//                          [--support 3] [--dijkstra hand,boost] [--factor 4] [--seed 1]
 //       one row per (size, repeat, threads, dijkstra): kd-tree, r(P), r-SIG and CPSP times (ms),
 //       edges and CPSP entries per point, bytes per point.
 //   graph_benchmark components [--sizes 100000] [--noise 0.3] [--factor 4] [--seed 1]

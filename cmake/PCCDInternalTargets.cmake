@@ -1,0 +1,25 @@
+# Build settings of PCCD's own programs (tests, examples, benchmarks, tools), never exported:
+# pccd_warnings carries the warning flags and the optional sanitizers (PCCD_SANITIZE);
+# pccd_add_program() adds an example or benchmark executable.
+add_library(pccd_warnings INTERFACE)
+if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
+  target_compile_options(pccd_warnings INTERFACE -Wall -Wextra -Wpedantic -Wno-unused-parameter)
+endif()
+if(PCCD_SANITIZE)
+  target_compile_options(pccd_warnings INTERFACE -fsanitize=${PCCD_SANITIZE} -fno-omit-frame-pointer
+                         -fno-sanitize-recover=all)
+  target_link_options(pccd_warnings INTERFACE -fsanitize=${PCCD_SANITIZE})
+endif()
+
+# pccd_add_program(<name> [CGAL]) -- an executable from <name>.cpp in the current directory, linked
+# with PCCD, the data location and the options above; CGAL: also CGAL::CGAL. Used by examples/ and
+# benchmark/.
+function(pccd_add_program name)
+  cmake_parse_arguments(ARG "CGAL" "" "" ${ARGN})
+  add_executable(${name} ${name}.cpp)
+  target_link_libraries(${name} PRIVATE PCCD::PCCD pccd_data pccd_warnings)
+  if(ARG_CGAL)
+    find_package(CGAL REQUIRED)
+    target_link_libraries(${name} PRIVATE CGAL::CGAL)
+  endif()
+endfunction()
