@@ -22,6 +22,7 @@
 #include <PCCD/Point_traits.h>
 #include <PCCD/concepts/PointCloudKernel.h>
 #include <PCCD/concepts/ReadablePointMap.h>
+#include <PCCD/internal/finite.h>
 
 namespace PCCD {
 
@@ -168,9 +169,9 @@ private:
         if (c.cols() == 0) throw Invalid_input("point cloud is empty");
         if (std::uint64_t(c.cols()) >= std::uint64_t(std::numeric_limits<Index>::max()))
             throw Invalid_input(internal::concat("point cloud has ", c.cols(), " points; at most 2^32 - 2 are supported"));
-        if (!c.allFinite()) {
+        if (!internal::all_finite(c)) {
             for (Eigen::Index i = 0; i < c.cols(); ++i)
-                if (!c.col(i).allFinite())
+                if (!internal::all_finite(c.col(i)))
                     throw Invalid_input(internal::concat("point ", i, " has a non-finite coordinate (", c(0, i), ", ",
                                                          c(1, i), ", ", c(2, i), ")"));
         }

@@ -189,7 +189,7 @@ private:
     template <class Derived>
     void set_checked(const Eigen::MatrixBase<Derived>& m, FT tolerance)
     {
-        if (!(tolerance >= FT(0) && tolerance < FT(0.5)))
+        if (!(std::isgreaterequal(tolerance, FT(0)) && std::isless(tolerance, FT(0.5))))
             throw Invalid_input(internal::concat("rigid transform: tolerance ", tolerance, " is not in [0, 0.5)"));
         for (int i = 0; i < 3; ++i)
             for (int j = 0; j < 4; ++j)

@@ -61,10 +61,10 @@ namespace internal {
 inline void check(const Sampling_radius_options& o)
 {
     if (o.samples == 0) throw Invalid_input("sampling radius: samples must be >= 1");
-    if (!(o.quantile > 0.0 && o.quantile <= 1.0))
+    if (!(std::isgreater(o.quantile, 0.0) && std::islessequal(o.quantile, 1.0)))
         throw Invalid_input(concat("sampling radius: quantile must be in (0, 1], got ", o.quantile));
     if (o.neighbors < 2) throw Invalid_input(concat("sampling radius: neighbors must be >= 2, got ", o.neighbors));
-    if (!(o.disk_factor > 0.0 && std::isfinite(o.disk_factor)))
+    if (!(std::isfinite(o.disk_factor) && o.disk_factor > 0.0))
         throw Invalid_input(concat("sampling radius: disk_factor must be finite and > 0, got ", o.disk_factor));
 }
 
@@ -211,7 +211,8 @@ inline double estimated_surface_area(std::size_t points, double radius)
 /// \throws Invalid_input unless surfel_radius > 0.
 inline double estimated_surfel_count(std::size_t points, double radius, double surfel_radius)
 {
-    if (!(surfel_radius > 0.0)) throw Invalid_input(internal::concat("surfel radius must be > 0, got ", surfel_radius));
+    if (!std::isgreater(surfel_radius, 0.0))
+        throw Invalid_input(internal::concat("surfel radius must be > 0, got ", surfel_radius));
     return estimated_surface_area(points, radius) / (std::numbers::pi * surfel_radius * surfel_radius);
 }
 

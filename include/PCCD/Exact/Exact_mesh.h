@@ -38,6 +38,7 @@
 #include <PCCD/Error.h>
 #include <PCCD/IO/Triangle_mesh_data.h>
 #include <PCCD/Rigid_transform_3.h>
+#include <PCCD/internal/finite.h>
 
 namespace PCCD {
 
@@ -223,7 +224,7 @@ private:
         if (data.vertices.empty()) throw Invalid_input("exact mesh: the mesh has no vertex");
         if (data.triangles.empty()) throw Invalid_input("exact mesh: the mesh has no triangle");
         for (std::size_t i = 0; i < data.vertices.size(); ++i)
-            if (!data.vertices[i].allFinite())
+            if (!internal::all_finite(data.vertices[i]))
                 throw Invalid_input(internal::concat("exact mesh: vertex ", i, " (", data.vertices[i].transpose(),
                                                      ") is not finite"));
         const Kernel::Collinear_3 collinear = Kernel().collinear_3_object();

@@ -19,6 +19,7 @@
 #include <Eigen/Core>
 
 #include <PCCD/Error.h>
+#include <PCCD/internal/finite.h>
 
 namespace PCCD {
 
@@ -119,7 +120,7 @@ struct Sphere_sphere_intersection {
 inline Sphere_sphere_intersection exact_sphere_sphere_intersection(const Eigen::Vector3d& c1, double r1,
                                                                    const Eigen::Vector3d& c2, double r2)
 {
-    if (!c1.allFinite() || !c2.allFinite())
+    if (!internal::all_finite(c1) || !internal::all_finite(c2))
         throw Invalid_input("exact_sphere_sphere_intersection: a sphere centre is not finite");
     if (!(std::isfinite(r1) && r1 > 0.0) || !(std::isfinite(r2) && r2 > 0.0))
         throw Invalid_input(internal::concat("exact_sphere_sphere_intersection: radii ", r1, " and ", r2,

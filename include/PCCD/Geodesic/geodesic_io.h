@@ -268,7 +268,8 @@ inline Geodesic_data read_geodesic_data(const std::string& path)
     std::vector<Proximity_edge> properties(e);
     for (std::uint64_t i = 0; i < e; ++i) {
         if (targets[i] >= n) in.fail(internal::concat("graph edge ", i, " points to vertex ", targets[i]));
-        if (!(lengths[i] >= 0.f) || flags[i] > 1) in.fail(internal::concat("invalid property of graph edge ", i));
+        if (!std::isgreaterequal(lengths[i], 0.f) || flags[i] > 1)
+            in.fail(internal::concat("invalid property of graph edge ", i));
         properties[i] = Proximity_edge{lengths[i], flags[i] == 1};
     }
     for (std::uint64_t u = 0; u < n; ++u)
@@ -288,7 +289,8 @@ inline Geodesic_data read_geodesic_data(const std::string& path)
         if (begin == end || cpsp_targets[begin] != p || distances[begin] != 0.f || predecessors[begin] != 0)
             in.fail(internal::concat("CPSP list of point ", p, " does not start with the point itself"));
         for (std::uint64_t i = begin + 1; i < end; ++i)
-            if (cpsp_targets[i] >= n || !(distances[i] >= distances[i - 1]) || !(double(distances[i]) <= float(bound)) ||
+            if (cpsp_targets[i] >= n || !std::isgreaterequal(distances[i], distances[i - 1]) ||
+                !std::islessequal(double(distances[i]), float(bound)) ||
                 predecessors[i] >= i - begin)
                 in.fail(internal::concat("invalid CPSP entry ", i - begin, " of point ", p));
     }

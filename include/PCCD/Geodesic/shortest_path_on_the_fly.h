@@ -65,7 +65,7 @@ public:
                      const Paths_on_the_fly_options& options = {}, const VirtualMap& is_virtual = {})
         : m_graph(&g), m_length(length), m_is_virtual(is_virtual), m_coordinates(&coordinates), m_options(options)
     {
-        if (!(options.bound > 0.0))
+        if (!std::isgreater(options.bound, 0.0))
             throw Invalid_input(internal::concat("paths on the fly: the bound must be > 0, got ", options.bound));
         if (std::size_t(coordinates.cols()) != std::size_t(num_vertices(g)))
             throw Invalid_input(internal::concat("paths on the fly: ", coordinates.cols(), " points but the graph has ",

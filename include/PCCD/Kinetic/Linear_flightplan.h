@@ -10,6 +10,7 @@
 
 #include <PCCD/Error.h>
 #include <PCCD/Kinetic/internal/Piecewise_cubic.h>
+#include <PCCD/internal/finite.h>
 
 namespace PCCD {
 
@@ -25,7 +26,7 @@ public:
     Linear_flightplan(const Eigen::Vector3d& start, const Eigen::Vector3d& velocity, double t0 = 0.0)
         : m_start(start), m_velocity(velocity), m_t0(t0)
     {
-        if (!start.allFinite() || !velocity.allFinite() || !std::isfinite(t0))
+        if (!internal::all_finite(start) || !internal::all_finite(velocity) || !std::isfinite(t0))
             throw Invalid_input(internal::concat("Linear_flightplan: non-finite start (", start.transpose(),
                                                  "), velocity (", velocity.transpose(), ") or t0 ", t0));
     }

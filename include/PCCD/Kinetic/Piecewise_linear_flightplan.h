@@ -14,6 +14,7 @@
 
 #include <PCCD/Error.h>
 #include <PCCD/Kinetic/internal/Piecewise_cubic.h>
+#include <PCCD/internal/finite.h>
 
 namespace PCCD {
 
@@ -48,7 +49,7 @@ public:
             if (!std::isfinite(ts[k]) || (k > 0 && !(ts[k] > ts[k - 1])))
                 throw Invalid_input(internal::concat("Piecewise_linear_flightplan: key time ", k, " (", ts[k],
                                                      ") is not finite or not after the previous one"));
-            if (!m_positions[k].allFinite())
+            if (!internal::all_finite(m_positions[k]))
                 throw Invalid_input(internal::concat("Piecewise_linear_flightplan: key position ", k,
                                                      " is not finite"));
         }

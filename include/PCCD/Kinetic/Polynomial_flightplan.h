@@ -15,6 +15,7 @@
 
 #include <PCCD/Error.h>
 #include <PCCD/Kinetic/internal/Piecewise_cubic.h>
+#include <PCCD/internal/finite.h>
 
 namespace PCCD {
 
@@ -37,7 +38,7 @@ public:
     explicit Polynomial_flightplan(const Coefficients& coefficients, double origin = 0.0)
     {
         for (std::size_t i = 0; i < 4; ++i)
-            if (!coefficients[i].allFinite())
+            if (!internal::all_finite(coefficients[i]))
                 throw Invalid_input(internal::concat("Polynomial_flightplan: coefficient c", i, " is not finite"));
         if (!std::isfinite(origin)) throw Invalid_input("Polynomial_flightplan: origin is not finite");
         m_pieces.push_back({-internal::infinity, origin, coefficients});
@@ -58,7 +59,7 @@ public:
             if (!std::isfinite(times[k]) || (k > 0 && !(times[k] > times[k - 1])))
                 throw Invalid_input(internal::concat("Polynomial_flightplan::hermite: key time ", k, " (",
                                                      times[k], ") is not finite or not after the previous one"));
-            if (!positions[k].allFinite() || !velocities[k].allFinite())
+            if (!internal::all_finite(positions[k]) || !internal::all_finite(velocities[k]))
                 throw Invalid_input(internal::concat("Polynomial_flightplan::hermite: key ", k,
                                                      " has a non-finite position or velocity"));
         }

@@ -205,7 +205,8 @@ private:
         if (other_now != m_now)
             throw Invalid_input(internal::concat("kinetic query: the trees are at different times (", m_now, " and ",
                                                  other_now, "); advance both first"));
-        if (!(margin >= 0.0)) throw Invalid_input(internal::concat("kinetic query: margin ", margin, " is negative"));
+        if (!std::isgreaterequal(margin, 0.0))
+            throw Invalid_input(internal::concat("kinetic query: margin ", margin, " is negative"));
     }
 
     void evaluate_positions()

@@ -38,7 +38,7 @@ namespace internal {
 
 inline void check(const Long_edge_options& options)
 {
-    if (!(options.factor > 0.0))
+    if (!std::isgreater(options.factor, 0.0))
         throw Invalid_input(internal::concat("long-edge factor must be > 0, got ", options.factor));
 }
 

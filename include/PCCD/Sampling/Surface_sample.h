@@ -10,6 +10,7 @@
 
 #include <PCCD/Error.h>
 #include <PCCD/Random.h>
+#include <PCCD/internal/finite.h>
 
 namespace PCCD {
 
@@ -71,7 +72,7 @@ Surface_sample sample_shape(const Shape& shape, std::size_t n, Random_engine& en
 /// Throws unless every coordinate of `v` is finite; `what` names the argument.
 inline void check_finite(const Eigen::Vector3d& v, const char* what)
 {
-    if (!v.allFinite())
+    if (!internal::all_finite(v))
         throw Invalid_input(concat(what, " (", v.x(), ", ", v.y(), ", ", v.z(), ") is not finite"));
 }
 

@@ -19,6 +19,7 @@
 #include <PCCD/Identity_point_map.h>
 #include <PCCD/Point_traits.h>
 #include <PCCD/concepts/ReadablePointMap.h>
+#include <PCCD/internal/finite.h>
 
 namespace PCCD {
 
@@ -57,7 +58,7 @@ public:
     void add(double x, double y, double z)
     {
         const Eigen::Vector3d p(x, y, z);
-        if (!p.allFinite())
+        if (!internal::all_finite(p))
             throw Invalid_input(concat("normalization: point ", m_count, " (", x, ", ", y, ", ", z,
                                        ") is not finite"));
         m_min = m_min.cwiseMin(p);
@@ -68,14 +69,31 @@ public:
     Similarity_3 normalization() const
     {
         if (m_count == 0) throw Invalid_input("normalization: the object has no points");
-        const double longest = (m_max - m_min).maxCoeff();
-        if (!(longest > 0.0))
+        if ((m_max.array() == m_min.array()).all())
             throw Invalid_input(concat("normalization: all ", m_count,
                                        " points coincide (zero extent); they cannot be scaled to [-1, 1]^3"));
-        const double scale = 2.0 / longest;
-        if (!(std::isfinite(longest) && std::isfinite(scale)))
-            throw Invalid_input(concat("normalization: the longest bounding-box side ", longest,
-                                       " gives a scale factor outside the range of double"));
+        // The range checks come before the arithmetic they protect, which would otherwise overflow
+        // (and trap when floating-point exceptions are enabled). Halved, the extent cannot overflow:
+        // max - min overflows exactly when half of it exceeds DBL_MAX / 2.
+        constexpr double max_double = std::numeric_limits<double>::max();
+        const double half_longest = (0.5 * m_max - 0.5 * m_min).maxCoeff();
+        const auto out_of_range = [&](double longest) {
+            return Invalid_input(concat("normalization: the longest bounding-box side ", longest,
+                                        " gives a scale factor outside the range of double"));
+        };
+        if (half_longest > max_double / 2.0) throw out_of_range(std::numeric_limits<double>::infinity());
+        const double longest = (m_max - m_min).maxCoeff(); // > 0: some coordinate differs
+        double scale = 0.0;
+        if (longest >= std::numeric_limits<double>::min()) {
+            scale = 2.0 / longest; // <= 2^1023
+        } else {
+            // Subnormal side: 2 / longest may overflow. Scaled by 2^54 (exactly) the quotient is
+            // normal and rounds as the unscaled one would; it fits a double iff it is at most
+            // DBL_MAX / 2^54.
+            const double scaled = 2.0 / (longest * 0x1p54);
+            if (scaled > max_double * 0x1p-54) throw out_of_range(longest);
+            scale = scaled * 0x1p54;
+        }
         // The midpoint as min + half the extent stays inside [min, max] even for huge coordinates.
         return Similarity_3{scale, m_min + 0.5 * (m_max - m_min)};
     }

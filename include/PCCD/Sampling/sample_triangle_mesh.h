@@ -19,6 +19,7 @@
 #include <PCCD/Point_traits.h>
 #include <PCCD/Random.h>
 #include <PCCD/Sampling/Surface_sample.h>
+#include <PCCD/internal/finite.h>
 
 namespace PCCD {
 
@@ -69,7 +70,7 @@ Triangle_mesh_sample sample_triangle_mesh(const Vertices& vertices, const Triang
     for (const Point& p : vertices) {
         const Eigen::Vector3d v(double(Point_traits<Point>::x(p)), double(Point_traits<Point>::y(p)),
                                 double(Point_traits<Point>::z(p)));
-        if (!v.allFinite())
+        if (!internal::all_finite(v))
             throw Invalid_input(internal::concat("mesh vertex ", positions.size(), " (", v.x(), ", ", v.y(), ", ",
                                                  v.z(), ") is not finite"));
         positions.push_back(v);

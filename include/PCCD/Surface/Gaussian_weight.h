@@ -25,7 +25,7 @@ public:
         if (!(std::isfinite(bandwidth) && bandwidth > 0.0))
             throw Invalid_input(internal::concat("Gaussian weight: bandwidth h is ", bandwidth,
                                                  "; it must be finite and > 0"));
-        if (!(threshold > 0.0 && threshold < 1.0))
+        if (!(std::isgreater(threshold, 0.0) && std::isless(threshold, 1.0)))
             throw Invalid_input(internal::concat("Gaussian weight: threshold theta_eps is ", threshold,
                                                  "; it must lie in (0, 1)"));
         m_inverse_h2 = 1.0 / (bandwidth * bandwidth);

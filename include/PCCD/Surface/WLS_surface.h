@@ -22,6 +22,7 @@
 #include <PCCD/concepts/SurfaceDistance.h>
 #include <PCCD/concepts/SurfaceWeight.h>
 #include <PCCD/internal/parallel.h>
+#include <PCCD/internal/finite.h>
 
 namespace PCCD {
 
@@ -110,9 +111,9 @@ public:
         if (std::size_t(m_normals->cols()) != m_distance.size())
             throw Invalid_input(internal::concat("WLS surface: ", m_normals->cols(), " normals given for ",
                                                  m_distance.size(), " points"));
-        if (!m_normals->allFinite())
+        if (!internal::all_finite(*m_normals))
             for (Eigen::Index i = 0; i < m_normals->cols(); ++i)
-                if (!m_normals->col(i).allFinite())
+                if (!internal::all_finite(m_normals->col(i)))
                     throw Invalid_input(internal::concat("WLS surface: the normal of point ", i, " is not finite"));
         if (!(std::isfinite(m_support) && m_support > 0.0))
             throw Invalid_input(internal::concat("WLS surface: support radius ", m_support, " must be finite and > 0"));

@@ -29,7 +29,7 @@ struct Bandwidth_options {
 ///         (when it is needed).
 inline double kernel_bandwidth(double sampling_radius, const Bandwidth_options& options = {})
 {
-    if (!(options.theta_eps > 0.0 && options.theta_eps < 1.0))
+    if (!(std::isgreater(options.theta_eps, 0.0) && std::isless(options.theta_eps, 1.0)))
         throw Invalid_input(internal::concat("bandwidth: theta_eps is ", options.theta_eps, "; it must lie in (0, 1)"));
     if (options.bandwidth != 0.0) {
         if (!(std::isfinite(options.bandwidth) && options.bandwidth > 0.0))

@@ -19,6 +19,7 @@
 #include <PCCD/Error.h>
 #include <PCCD/Proximity_graph/Proximity_graph.h>
 #include <PCCD/concepts/ProximityGraph.h>
+#include <PCCD/internal/finite.h>
 
 namespace PCCD {
 
@@ -67,7 +68,8 @@ Orientation_report orient_normals(const Graph& g, const Eigen::MatrixBase<Positi
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
     for (std::size_t i = 0; i < n; ++i) {
         const auto column = normals.col(Eigen::Index(i));
-        if (!column.allFinite()) throw Invalid_input(internal::concat("orient_normals: normal ", i, " is not finite"));
+        if (!internal::all_finite(column))
+            throw Invalid_input(internal::concat("orient_normals: normal ", i, " is not finite"));
         has_normal[i] = !column.isZero(0.0);
         if (!has_normal[i]) ++report.unoriented;
         centroid += positions.col(Eigen::Index(i)).template cast<double>();
@@ -137,7 +139,7 @@ Orientation_report orient_normals_like(Eigen::Matrix3Xd& normals, const Eigen::M
     Orientation_report report;
     for (Eigen::Index i = 0; i < normals.cols(); ++i) {
         const Eigen::Vector3d r = reference.col(i).template cast<double>();
-        if (!r.allFinite() || r.isZero(0.0))
+        if (!internal::all_finite(r) || r.isZero(0.0))
             throw Invalid_input(internal::concat("orient_normals_like: the reference normal of point ", i, " (", r.x(),
                                                  ", ", r.y(), ", ", r.z(), ") is zero or not finite"));
         if (normals.col(i).isZero(0.0)) {

@@ -99,9 +99,12 @@ inline std::pair<std::size_t, std::size_t> cloth_grid(std::size_t triangles)
 ///         degrees or more, or fewer than 2 triangles. Deterministic (no randomness). Complexity: O(V duration wave_speed / spacing).
 inline Kinetic_scene<Kinetic_triangle> make_cloth_scene(const Cloth_scene_options& o = {})
 {
-    if (o.triangles < 2 || !(o.duration > 0) || !(o.key_rate > 0) || !(o.cloth_size > 0) ||
-        !(o.table_half_width > 0) || !(o.table_height > 0) || !(o.drop_height >= 0) || !(o.wave_speed > 0) ||
-        !(std::abs(o.tilt_degrees) < 90))
+    // Quiet comparisons: a NaN option is rejected without raising FE_INVALID.
+    if (o.triangles < 2 || !std::isgreater(o.duration, 0.0) || !std::isgreater(o.key_rate, 0.0) ||
+        !std::isgreater(o.cloth_size, 0.0) || !std::isgreater(o.table_half_width, 0.0) ||
+        !std::isgreater(o.table_height, 0.0) || !std::isgreaterequal(o.drop_height, 0.0) ||
+        !std::isgreater(o.wave_speed, 0.0) ||
+        !std::isless(std::abs(o.tilt_degrees), 90.0))
         throw Invalid_input(internal::concat("make_cloth_scene: invalid options (triangles ", o.triangles, ", duration ",
                                              o.duration, ", key_rate ", o.key_rate, ", tilt ", o.tilt_degrees,
                                              " degrees; sizes and wave speed must be > 0, |tilt| < 90)"));

@@ -21,6 +21,7 @@
 #include <PCCD/Error.h>
 #include <PCCD/Kinetic/Scenes/Kinetic_scene.h>
 #include <PCCD/Random.h>
+#include <PCCD/internal/finite.h>
 
 namespace PCCD {
 
@@ -70,7 +71,7 @@ inline std::vector<Eigen::Vector3d> read_off_vertices(const std::string& file)
     for (std::size_t i = 0; i < vertices; ++i) {
         if (!(text >> points[i].x() >> points[i].y() >> points[i].z()))
             throw File_error(file, concat("truncated or malformed vertex ", i));
-        if (!points[i].allFinite()) throw File_error(file, concat("vertex ", i, " is not finite"));
+        if (!internal::all_finite(points[i])) throw File_error(file, concat("vertex ", i, " is not finite"));
     }
     return points;
 }
@@ -100,7 +101,7 @@ inline std::vector<Eigen::Vector3d> bumpy_sphere(std::size_t n, Random_engine& r
 ///         duration, key rate or frequency.
 inline Kinetic_scene<Kinetic_point> make_deforming_cloud_scene(const Deforming_cloud_options& o = {})
 {
-    if (!(o.duration > 0) || !(o.key_rate > 0) || !(o.frequency > 0))
+    if (!std::isgreater(o.duration, 0.0) || !std::isgreater(o.key_rate, 0.0) || !std::isgreater(o.frequency, 0.0))
         throw Invalid_input(internal::concat("make_deforming_cloud_scene: duration ", o.duration, ", key_rate ",
                                              o.key_rate, " and frequency ", o.frequency, " must be > 0"));
     Random_engine rng(o.seed);

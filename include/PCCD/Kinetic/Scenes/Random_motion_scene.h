@@ -3,6 +3,7 @@
 // kinetic tree processes O(n log n) events over the whole animation).
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -33,7 +34,7 @@ struct Random_motion_options {
 /// \throws Invalid_input if points == 0 or duration or max_speed is not positive.
 inline Kinetic_scene<Kinetic_point> make_random_motion_scene(const Random_motion_options& o = {})
 {
-    if (o.points == 0 || !(o.duration > 0) || !(o.max_speed > 0))
+    if (o.points == 0 || !std::isgreater(o.duration, 0.0) || !std::isgreater(o.max_speed, 0.0))
         throw Invalid_input(internal::concat("make_random_motion_scene: points ", o.points, ", duration ", o.duration,
                                              " and max_speed ", o.max_speed, " must be > 0"));
     Random_engine rng(o.seed);

@@ -93,7 +93,7 @@ template <class P, class Queue = Event_queue<>>
 Kinetic_run_result run_kinetic_scene(const Kinetic_scene<P>& scene, Kinetic_method method,
                                      const Kinetic_run_options& options = {})
 {
-    if (!(options.query_hz > 0))
+    if (!std::isgreater(options.query_hz, 0.0))
         throw Invalid_input(internal::concat("run_kinetic_scene: query_hz ", options.query_hz, " must be > 0"));
     using Clock = std::chrono::steady_clock;
     using F = Piecewise_linear_flightplan;

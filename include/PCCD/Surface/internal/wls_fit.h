@@ -9,6 +9,8 @@
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 
+#include <PCCD/internal/finite.h>
+
 namespace PCCD::internal {
 
 /// Sums of one WLS fit, accumulated relative to the query point x so that the covariance does not
@@ -74,7 +76,7 @@ inline Wls_fit finish_fit(const Eigen::Vector3d& x, const Wls_sums& sums)
     const double gap = lambda(1) - lambda(0);
     fit.determined = sums.count >= 3 && gap > wls_degenerate_gap * lambda(2) &&
                      gap > rounding && lambda(1) >= wls_min_aspect * lambda(2) &&
-                     solver.eigenvectors().col(0).allFinite();
+                     internal::all_finite(solver.eigenvectors().col(0));
     fit.normal = solver.eigenvectors().col(0).normalized();
     return fit;
 }
