@@ -159,7 +159,8 @@ public:
     /// (squared distance, index), written into `out` (cleared first).
     void within_radius(const Vector_3& query, FT radius, std::vector<Result>& out) const
     {
-        PCCD_precondition_msg(radius >= FT(0), "radius query with a negative radius");
+        // A quiet comparison: `radius >= 0` would raise FE_INVALID (a trap in Debug test builds) on NaN.
+        PCCD_precondition_msg(std::isgreaterequal(radius, FT(0)), "radius query with a negative or NaN radius");
         out.clear();
         if (size() == 0) return;
         internal::Radius_result_set<FT> results(out, radius * radius);

@@ -26,6 +26,7 @@
 #include <PCCD/Error.h>
 #include <PCCD/Geodesic/Close_pairs_shortest_paths.h>
 #include <PCCD/Geodesic/geodesic_io.h>
+#include <PCCD/Hierarchy/Point_cloud_hierarchy.h>
 #include <PCCD/Identity_point_map.h>
 #include <PCCD/Point_cloud.h>
 #include <PCCD/Point_traits.h>
@@ -58,6 +59,8 @@ struct Point_cloud_object_options {
     Sampling_radius_options sampling_radius = {};
     /// The kernel: eta (default 3), theta_eps (default 1e-2), or a bandwidth h given by the user.
     Bandwidth_options bandwidth = {};
+    /// The point cloud hierarchy the intersection queries traverse (default: leaves of 16 points).
+    Point_cloud_hierarchy_options hierarchy = {};
     /// Worker threads of every stage; 0 (default) uses all available. Ignored without TBB. The
     /// result does not depend on it.
     unsigned threads = 0;
@@ -72,6 +75,8 @@ struct Preprocessing_times {
     double cpsp = 0.0;
     /// Normal estimation and orientation.
     double normals = 0.0;
+    /// The point cloud hierarchy (rebuilt on load, like the kd-tree).
+    double hierarchy = 0.0;
 };
 
 /// The preprocessed state of one point cloud: everything a collision query needs, built once.
@@ -133,7 +138,8 @@ public:
     /// \throws File_error naming the file and the problem when it is missing, not a PCCD object
     ///         file, of another format version or byte order, truncated, corrupted (checksum) or
     ///         inconsistent.
-    static Point_cloud_object load(const std::string& path);
+    /// The hierarchy is not stored in the file: it is rebuilt with `hierarchy` (default options).
+    static Point_cloud_object load(const std::string& path, const Point_cloud_hierarchy_options& hierarchy = {});
     /// @}
 
     /// Writes the object to the binary file `path` (replacing it): points, normals, parameters,
@@ -155,6 +161,8 @@ public:
     const Point_cloud<K>& cloud() const { return m_data->cloud; }
     std::size_t size() const { return m_data->cloud.size(); }
     const Proximity_graph& graph() const { return *m_data->graph; }
+    /// The bounding-volume hierarchy over the points (ALGORITHMS.md section 4).
+    const Point_cloud_hierarchy& hierarchy() const { return m_data->hierarchy; }
     const Close_pairs_shortest_paths& cpsp() const { return *m_data->cpsp; }
     /// r(P).
     double sampling_radius() const { return m_data->sampling_radius; }
@@ -186,6 +194,7 @@ private:
         Preprocessing_times timings;
         Geodesic_surface geodesic;
         Euclidean_surface euclidean;
+        Point_cloud_hierarchy hierarchy;
     };
 
     struct Timed_cloud {
@@ -232,12 +241,18 @@ private:
     static Data make_data(Point_cloud<K> cloud, std::shared_ptr<const Proximity_graph> graph,
                           std::shared_ptr<const Close_pairs_shortest_paths> cpsp, double sampling_radius,
                           const Gaussian_weight& weight, Eigen::Matrix3Xd normals, Orientation_report orientation,
-                          bool normals_given, Preprocessing_times timings)
+                          bool normals_given, Preprocessing_times timings,
+                          const Point_cloud_hierarchy_options& hierarchy_options)
     {
         Geodesic_surface geodesic(Geodesic_distance<K>(cloud, cpsp), weight, normals);
         Euclidean_surface euclidean(Euclidean_distance<K>(cloud), weight, std::move(normals));
-        return Data{std::move(cloud), std::move(graph), std::move(cpsp), sampling_radius, orientation,
-                    normals_given, timings, std::move(geodesic), std::move(euclidean)};
+        const auto start = Clock::now();
+        Point_cloud_hierarchy hierarchy(cloud.coordinates(), hierarchy_options);
+        timings.hierarchy = ms_since(start);
+        return Data{std::move(cloud),       std::move(graph),     std::move(cpsp),
+                    sampling_radius,        orientation,          normals_given,
+                    timings,                std::move(geodesic),  std::move(euclidean),
+                    std::move(hierarchy)};
     }
 
     static std::shared_ptr<const Data> preprocess(Timed_cloud built, std::optional<Eigen::Matrix3Xd> given_normals,
@@ -248,6 +263,8 @@ private:
         timings.kd_tree = built.milliseconds;
         if (cloud.size() < 2)
             throw Invalid_input("point cloud object: a surface needs at least two points, the cloud has one");
+        if (options.hierarchy.leaf_size == 0)
+            throw Invalid_input("point cloud object: the hierarchy's leaf_size must be >= 1");
         if (given_normals && std::size_t(given_normals->cols()) != cloud.size())
             throw Invalid_input(internal::concat("point cloud object: ", given_normals->cols(), " normals for ",
                                                  cloud.size(), " points"));
@@ -280,7 +297,7 @@ private:
 
         return std::make_shared<const Data>(make_data(std::move(cloud), std::move(graph), std::move(cpsp), r, weight,
                                                       std::move(estimate.normals), orientation,
-                                                      given_normals.has_value(), timings));
+                                                      given_normals.has_value(), timings, options.hierarchy));
     }
 
     std::shared_ptr<const Data> m_data;
@@ -416,7 +433,8 @@ void Point_cloud_object<K>::save(const std::string& path) const
 }
 
 template <PointCloudKernel K>
-Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path)
+Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path,
+                                                 const Point_cloud_hierarchy_options& hierarchy)
 {
     const std::string bytes = internal::read_binary_file(path);
     internal::Byte_reader in(path, bytes);
@@ -483,7 +501,7 @@ Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path)
         auto graph = std::make_shared<const Proximity_graph>(std::move(geodesic.graph));
         return Point_cloud_object(std::make_shared<const Data>(make_data(std::move(cloud), std::move(graph),
                                                                          std::move(cpsp), r, weight, std::move(normals),
-                                                                         orientation, given, timings)));
+                                                                         orientation, given, timings, hierarchy)));
     } catch (const File_error&) {
         throw;
     } catch (const Invalid_input& e) {

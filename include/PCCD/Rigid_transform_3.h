@@ -18,6 +18,7 @@
 #include <type_traits>
 
 #include <Eigen/Core>
+#include <Eigen/LU>
 #include <Eigen/SVD>
 
 #include <PCCD/Error.h>
@@ -196,6 +197,14 @@ private:
                 if (!std::isfinite(m(i, j)))
                     throw Invalid_input(internal::concat("rigid transform: ", j < 3 ? "rotation" : "translation",
                                                          " entry (", i, ", ", j, ") is ", m(i, j)));
+        // Within a tolerance below 0.5 every column of a rotation has squared length below 1.5, so no
+        // entry exceeds 2 in absolute value; rejecting larger entries here also keeps R^T R below
+        // from overflowing (a trap in builds with floating-point exceptions enabled).
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                if (std::abs(m(i, j)) > FT(2))
+                    throw Invalid_input(internal::concat("rigid transform: the rotation part scales: entry (", i, ", ",
+                                                         j, ") is ", m(i, j), ", beyond any rotation's"));
         const Matrix_3 r = m.template leftCols<3>();
         const Matrix_3 gram = r.transpose() * r;
         for (int i = 0; i < 3; ++i)

@@ -16,7 +16,8 @@ namespace PCCD {
 /// Immutable and trivially copyable; safe to share between threads.
 class Gaussian_weight {
 public:
-    /// \param bandwidth h, finite and > 0 (length unit of the cloud).
+    /// \param bandwidth h, finite and > 0 (length unit of the cloud), at most 1e154 and at least 1e-154
+    ///        (so that h^2 and 1 / h^2 do not overflow).
     /// \param threshold theta_eps in (0, 1): weights below it are ignored.
     /// \throws Invalid_input naming the bad parameter.
     Gaussian_weight(double bandwidth, double threshold)
@@ -28,11 +29,14 @@ public:
         if (!(std::isgreater(threshold, 0.0) && std::isless(threshold, 1.0)))
             throw Invalid_input(internal::concat("Gaussian weight: threshold theta_eps is ", threshold,
                                                  "; it must lie in (0, 1)"));
+        // Checked before the arithmetic below, which would otherwise overflow (h^2, 1 / h^2) and trap
+        // in builds with floating-point exceptions enabled. In [1e-154, 1e154], h^2 and 1 / h^2 are
+        // normal doubles and h sqrt(-ln theta_eps) <= 28 h is finite.
+        if (!(bandwidth >= 1e-154 && bandwidth <= 1e154))
+            throw Invalid_input(internal::concat("Gaussian weight: bandwidth ", bandwidth, " and threshold ", threshold,
+                                                 " overflow double precision (h must lie in [1e-154, 1e154])"));
         m_inverse_h2 = 1.0 / (bandwidth * bandwidth);
         m_support = bandwidth * std::sqrt(-std::log(threshold));
-        if (!(std::isfinite(m_inverse_h2) && std::isfinite(m_support)))
-            throw Invalid_input(internal::concat("Gaussian weight: bandwidth ", bandwidth, " and threshold ", threshold,
-                                                 " overflow double precision"));
     }
 
     /// theta(d) = exp(-d^2 / h^2). O(1).

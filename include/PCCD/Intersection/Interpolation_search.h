@@ -1,0 +1,311 @@
+// PCCD/Intersection/Interpolation_search.h -- the leaf intersector of WSCG05 section 4
+// (ALGORITHMS.md section 6): root bracketing with random points of one cloud and partners from
+// their CPSP annulus, interpolation search for the sign change of the other surface's f along the
+// stored shortest path (bisection fallback), giving approximate intersection points (AIPs).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include <PCCD/Error.h>
+#include <PCCD/Intersection/Intersection_options.h>
+#include <PCCD/Intersection/Intersection_result.h>
+#include <PCCD/Intersection/internal/Query_state.h>
+#include <PCCD/Intersection/internal/overlap_region.h>
+#include <PCCD/Random.h>
+
+namespace PCCD {
+
+/// How the partners of a root-bracketing sample are chosen in its CPSP annulus.
+enum class Partner_choice : std::uint8_t {
+    /// Candidates ranked by the first-order prediction f(p_i) + n(p_i) . (p_j - p_i) of the other
+    /// surface's f (the normal comes with the evaluation at p_i): the most strongly opposite-signed
+    /// first. Measured to find a bracket with fewer evaluations than random draws (doc/benchmarks.md).
+    predicted = 0,
+    /// Random candidates from the annulus, as in WSCG05.
+    random = 1,
+};
+
+/// Leaf intersector policy: stochastic root bracketing and interpolation search (WSCG05 section 4).
+///
+/// For one role (sampled cloud S, tested surface f_T, the other object), with Ŝ the points of S in
+/// the overlap region:
+/// 1. n = a ln a + c a random points of Ŝ without replacement, at least min_samples and at most |Ŝ|,
+///    where a = |Ŝ| (r(S) / r_s)^2 is the number of conceptual surfels of radius r_s = rho / 2 in the
+///    region and rho the outer annulus radius (annulus_outer times S's CPSP bound).
+/// 2. For a sample p_i with f_T(p_i) defined and |f_T(p_i)| <= lipschitz_slack rho (otherwise no sign
+///    change is reachable within rho), up to `partner_candidates` partners p_j from the annulus
+///    rho (1 - annulus_width) < g(p_i, p_j) <= rho of p_i's CPSP list; the first with
+///    f_T(p_i) f_T(p_j) < 0 makes a bracket.
+/// 3. Interpolation search along the stored shortest path p_i = P_0 ... P_m = p_j (WSCG05 Algorithm
+///    1): x = l + ceil((r - l) d_l / (d_l - d_r)), clamped inside (l, r); a step that does not halve
+///    the interval makes the next step a bisection, so at most 2 ceil(log2 m) + 2 steps are taken.
+///    It ends at a path point with |f_T| <= epsilon or at two adjacent points straddling T; the AIP
+///    interpolates linearly between them.
+///
+/// All fields have defaults; use designated initializers. Immutable; thread-safe.
+struct Interpolation_search {
+    /// n_min: the least number of samples per role (WSCG05: 200 suffice for <= 1 % error).
+    std::size_t min_samples = 200;
+    /// When set: exactly this many samples per role (at most the region's size), instead of the
+    /// covering formula; WSCG05 Fig. 7 sweeps it (n = 20 ... 200). Must be >= 1 when set.
+    std::optional<std::size_t> samples = std::nullopt;
+    /// c of the surfel covering: each surfel is hit with probability exp(-exp(-c)) (3.5: > 97 %).
+    double coverage_c = 3.5;
+    /// Outer annulus radius rho as a fraction of the sampled cloud's CPSP bound, in (0, 1].
+    double annulus_outer = 1.0;
+    /// Annulus width as a fraction of rho, in (0, 1].
+    double annulus_width = 0.5;
+    /// b: partner candidates evaluated per bracketing sample (>= 1).
+    std::size_t partner_candidates = 4;
+    Partner_choice partner_choice = Partner_choice::predicted;
+    /// Slack of the reachability test |f_T(p_i)| <= slack rho (>= 1; f is about a distance, so 1
+    /// would be exact for a true distance function).
+    double lipschitz_slack = 1.5;
+
+    /// "isearch".
+    static constexpr const char* name() { return "isearch"; }
+
+    /// \throws Invalid_input naming the first invalid field.
+    void check() const
+    {
+        if (min_samples == 0) throw Invalid_input("interpolation search: min_samples must be >= 1");
+        if (samples && *samples == 0) throw Invalid_input("interpolation search: samples must be >= 1 when set");
+        if (!(std::isfinite(coverage_c) && coverage_c >= 0.0))
+            throw Invalid_input(internal::concat("interpolation search: coverage_c ", coverage_c, " must be finite and >= 0"));
+        if (!(annulus_outer > 0.0 && annulus_outer <= 1.0))
+            throw Invalid_input(internal::concat("interpolation search: annulus_outer ", annulus_outer, " must be in (0, 1]"));
+        if (!(annulus_width > 0.0 && annulus_width <= 1.0))
+            throw Invalid_input(internal::concat("interpolation search: annulus_width ", annulus_width, " must be in (0, 1]"));
+        if (partner_candidates == 0) throw Invalid_input("interpolation search: partner_candidates must be >= 1");
+        if (!(std::isfinite(lipschitz_slack) && lipschitz_slack >= 1.0))
+            throw Invalid_input(internal::concat("interpolation search: lipschitz_slack ", lipschitz_slack, " must be finite and >= 1"));
+        if (partner_choice != Partner_choice::predicted && partner_choice != Partner_choice::random)
+            throw Invalid_input("interpolation search: unknown partner_choice");
+    }
+
+    /// The automatic epsilon: 0.05 times the smaller sampling radius.
+    double default_epsilon(double smaller_sampling_radius) const { return 0.05 * smaller_sampling_radius; }
+
+    /// The query: the candidate points of both objects (points of A in B's region boxes grown by
+    /// B's kernel support, and vice versa), then one role per object, the smaller object's points
+    /// sampled first (the second role only with options.symmetric, and in first-hit mode only if
+    /// the first found nothing). `closest` is not estimated by this policy (set to NaN).
+    template <class A, class B>
+    void run(const internal::Posed_object<A>& a, const internal::Posed_object<B>& b, const Intersection_options& options,
+             double epsilon, internal::Query_state& state, double& closest) const
+    {
+        closest = std::numeric_limits<double>::quiet_NaN();
+        // The smaller object's points are sampled first; the second role runs only if needed.
+        if (a.size() <= b.size()) {
+            run_role(a, b, options.region, epsilon, state);
+            if (options.symmetric && !state.stop()) run_role(b, a, options.region, epsilon, state);
+        } else {
+            run_role(b, a, options.region, epsilon, state);
+            if (options.symmetric && !state.stop()) run_role(a, b, options.region, epsilon, state);
+        }
+    }
+
+    /// The number of samples for a region of `region_points` points of a cloud with sampling radius
+    /// r and outer annulus radius rho.
+    std::size_t sample_count(std::size_t region_points, double r, double rho) const
+    {
+        if (region_points == 0) return 0;
+        if (samples) return std::min(*samples, region_points);
+        const double rs = 0.5 * rho;
+        const double a = std::max(1.0, double(region_points) * (r / rs) * (r / rs));
+        const double wanted = std::max(double(min_samples), a * std::log(a) + coverage_c * a);
+        return wanted >= double(region_points) ? region_points : std::size_t(std::ceil(wanted));
+    }
+
+    /// One role: the points of `sampled` in the region (those within `tested`'s leaf boxes grown by
+    /// its kernel support) are tested against the surface of `tested`. AIPs go to state.sink (world
+    /// coordinates); returns when the sink is done, the budget is spent or the samples are
+    /// exhausted. \pre epsilon > 0
+    template <class S, class T>
+    void run_role(const internal::Posed_object<S>& sampled, const internal::Posed_object<T>& tested,
+                  Overlap_region region, double epsilon, internal::Query_state& state) const
+    {
+        const Rigid_transform_3<double> s_to_t = tested.from_world * sampled.to_world;
+        const auto& cpsp = sampled.object->cpsp();
+        const double rho = annulus_outer * cpsp.bound();
+        const double inner = rho * (1.0 - annulus_width);
+        const auto position = [&sampled](std::uint32_t i) { return sampled.position(i); };
+        internal::Region_sampler<decltype(position)> region_sampler(sampled.object->hierarchy(),
+                                                                    tested.object->hierarchy(), s_to_t,
+                                                                    tested.support_radius(), region, position,
+                                                                    state.counters);
+        std::vector<std::uint32_t> path;
+        std::vector<std::pair<double, std::uint32_t>> ranked;
+        const auto evaluate_point = [&](std::uint32_t i) {
+            return state.evaluate_local(tested, s_to_t.transform_point(sampled.position(i)));
+        };
+        const double r = sampled.sampling_radius();
+        std::uint32_t i = 0;
+        while (!state.stop()) {
+            // n = a ln a + c a samples of the region (an estimate until the region size is known).
+            const std::size_t drawn = region_sampler.accepted();
+            if (samples && drawn >= *samples) return;
+            if (drawn >= 64 || region_sampler.region_size_known()) {
+                const std::size_t size = std::size_t(std::ceil(region_sampler.region_size()));
+                if (drawn >= sample_count(size, r, rho)) return;
+            }
+            if (!region_sampler.next(state.engine, i)) return;
+            ++state.counters.samples;
+            const Eigen::Vector3d pi_world = sampled.to_world.transform_point(sampled.position(i));
+            // intersection_points(): a sample next to a point already found adds nothing.
+            if (state.sink.near(pi_world, state.sink.spacing())) continue;
+            const Surface_evaluation ei = evaluate_point(i);
+            if (!ei.defined()) continue;
+            const double di = ei.value;
+            if (std::abs(di) <= epsilon) {
+                state.sink.add(aip(pi_world));
+                continue;
+            }
+            if (std::abs(di) > lipschitz_slack * rho) continue;
+            ++state.counters.brackets_tried;
+            const auto [first, last] = annulus_range(cpsp, i, inner, rho);
+            if (first >= last) continue;
+            choose_partners(sampled, s_to_t, cpsp, i, first, last, ei, ranked, state);
+            for (const auto& [score, entry] : ranked) {
+                if (state.out_of_budget()) return;
+                const std::uint32_t j = cpsp.targets(i)[entry];
+                ++state.counters.partner_candidates;
+                const Surface_evaluation ej = evaluate_point(j);
+                if (!ej.defined()) continue;
+                if (std::abs(ej.value) <= epsilon) { // the partner lies on T itself
+                    state.sink.add(aip(sampled.to_world.transform_point(sampled.position(j))));
+                    break;
+                }
+                if ((di < 0.0) == (ej.value < 0.0)) continue;
+                ++state.counters.brackets_found;
+                cpsp.path(i, entry, path);
+                if (auto aip = search_path(sampled, tested, s_to_t, path, di, ej.value, epsilon, state))
+                    state.sink.add(*aip);
+                break;
+            }
+        }
+    }
+
+private:
+    static Intersection_point aip(const Eigen::Vector3d& world)
+    {
+        constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+        return Intersection_point{world, nan, nan, Intersection_point_kind::approximate};
+    }
+
+    /// The annulus of p's list; when the list ends before the inner radius (sparse or boundary
+    /// points), its outer half.
+    template <class Map>
+    static std::pair<std::size_t, std::size_t> annulus_range(const Map& cpsp, std::uint32_t p, double inner, double outer)
+    {
+        auto [first, last] = cpsp.annulus(p, inner, outer);
+        if (first >= last) {
+            const std::size_t size = cpsp.targets(p).size();
+            last = size;
+            first = std::max<std::size_t>(1, size / 2);
+        }
+        return {first, last};
+    }
+
+    template <class S, class Map>
+    void choose_partners(const internal::Posed_object<S>& sampled, const Rigid_transform_3<double>& s_to_t,
+                         const Map& cpsp, std::uint32_t i, std::size_t first, std::size_t last,
+                         const Surface_evaluation& ei, std::vector<std::pair<double, std::uint32_t>>& ranked,
+                         internal::Query_state& state) const
+    {
+        ranked.clear();
+        const auto targets = cpsp.targets(i);
+        if (partner_choice == Partner_choice::random) {
+            const std::size_t count = std::min(partner_candidates, last - first);
+            std::vector<std::uint32_t> entries(last - first);
+            for (std::size_t e = first; e < last; ++e) entries[e - first] = std::uint32_t(e);
+            for (std::size_t k = 0; k < count; ++k) {
+                const std::size_t pick = k + std::size_t(uniform_index(state.engine, entries.size() - k));
+                std::swap(entries[k], entries[pick]);
+                ranked.emplace_back(0.0, entries[k]);
+            }
+            return;
+        }
+        // Predicted f_T at p_j: f_T(p_i) + n_T(p_i) . (p_j - p_i), all in T's frame; candidates whose
+        // prediction has the opposite sign, most strongly opposite first.
+        const Eigen::Vector3d pi = s_to_t.transform_point(sampled.position(i));
+        const double sign = ei.value < 0.0 ? -1.0 : 1.0;
+        for (std::size_t e = first; e < last; ++e) {
+            const Eigen::Vector3d pj = s_to_t.transform_point(sampled.position(targets[e]));
+            const double predicted = ei.value + ei.normal.dot(pj - pi);
+            ranked.emplace_back(sign * predicted, std::uint32_t(e));
+        }
+        const std::size_t count = std::min(partner_candidates, ranked.size());
+        std::partial_sort(ranked.begin(), ranked.begin() + std::ptrdiff_t(count), ranked.end());
+        ranked.resize(count);
+        // Keep the predicted crossings; if none is predicted, still try the best candidate once.
+        const auto crossing_end = std::find_if(ranked.begin(), ranked.end(), [](const auto& x) { return x.first >= 0.0; });
+        ranked.erase(crossing_end == ranked.begin() ? ranked.begin() + 1 : crossing_end, ranked.end());
+    }
+
+    /// WSCG05 Algorithm 1 on the path, with the bisection fallback and the step bound.
+    template <class S, class T>
+    static std::optional<Intersection_point> search_path(const internal::Posed_object<S>& sampled,
+                                                         const internal::Posed_object<T>& tested,
+                                                         const Rigid_transform_3<double>& s_to_t,
+                                                         const std::vector<std::uint32_t>& path, double d_first,
+                                                         double d_last, double epsilon, internal::Query_state& state)
+    {
+        if (path.size() < 2) return std::nullopt;
+        std::size_t l = 0, r = path.size() - 1;
+        double dl = d_first, dr = d_last;
+        std::size_t bound = 2;
+        for (std::size_t m = r; m > 1; m = (m + 1) / 2) bound += 2;
+        bool bisect = false;
+        for (std::size_t step = 0; l + 1 < r && std::abs(dl) > epsilon && std::abs(dr) > epsilon; ++step) {
+            if (step >= bound || state.out_of_budget()) break;
+            std::size_t x;
+            if (bisect) {
+                x = l + (r - l) / 2;
+                ++state.counters.bisection_steps;
+            } else {
+                const double t = dl / (dl - dr); // in (0, 1): dl and dr have opposite signs
+                x = l + std::size_t(std::ceil(double(r - l) * t));
+            }
+            x = std::clamp(x, l + 1, r - 1);
+            ++state.counters.search_steps;
+            const Surface_evaluation ex =
+                state.evaluate_local(tested, s_to_t.transform_point(sampled.position(path[x])));
+            if (!ex.defined()) {
+                if (bisect) return std::nullopt; // the path leaves the other surface's support
+                bisect = true;
+                continue;
+            }
+            const std::size_t before = r - l;
+            if ((ex.value < 0.0) == (dl < 0.0) && ex.value != 0.0) {
+                l = x;
+                dl = ex.value;
+            } else {
+                r = x;
+                dr = ex.value;
+            }
+            bisect = 2 * (r - l) > before;
+        }
+        Eigen::Vector3d local;
+        if (std::abs(dl) <= epsilon) {
+            local = sampled.position(path[l]);
+        } else if (std::abs(dr) <= epsilon) {
+            local = sampled.position(path[r]);
+        } else {
+            const double wl = std::abs(dr) / (std::abs(dl) + std::abs(dr));
+            local = wl * sampled.position(path[l]) + (1.0 - wl) * sampled.position(path[r]);
+        }
+        return aip(sampled.to_world.transform_point(local));
+    }
+};
+
+} // namespace PCCD

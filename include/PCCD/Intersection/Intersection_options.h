@@ -1,0 +1,90 @@
+// PCCD/Intersection/Intersection_options.h -- the run-time knobs shared by every intersection query
+// (ALGORITHMS.md sections 5 and 6): seed, tolerance, region, refinement, output density, budget.
+// The leaf intersector policies (Interpolation_search.h, Randomized_sampling.h) carry their own.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+
+#include <PCCD/Error.h>
+
+namespace PCCD {
+
+/// Where a query looks for the intersection.
+enum class Overlap_region : std::uint8_t {
+    /// Pairs of hierarchy leaves whose boxes may overlap (the default): the work follows the contact
+    /// region.
+    leaf_boxes = 0,
+    /// Box(A) intersected with Box(B), as WSCG05 section 5.2 did ("no BV hierarchies were used"):
+    /// every point of A inside B's box (grown by B's kernel support), and vice versa.
+    object_boxes = 1,
+};
+
+/// How the points of intersection_points() are refined (ALGORITHMS.md section 6.3).
+enum class Refinement : std::uint8_t {
+    /// Return the approximate intersection points (AIPs) as found.
+    none = 0,
+    /// WSCG05 section 4.3: random samples in the intersection sphere around the AIP; the sample with
+    /// the smallest max(|f_A|, |f_B|) replaces the AIP when both values are below the threshold.
+    sampling = 1,
+    /// Gauss-Newton on the two equations f_A = f_B = 0 (minimum-norm steps, two evaluations per step)
+    /// starting at the AIP; measured more precise and cheaper than sampling (doc/benchmarks.md).
+    projection = 2,
+};
+
+/// Options of do_intersect() and intersection_points(). Every field has a documented default; use
+/// designated initializers: `{.seed = 7, .refinement = Refinement::none}`.
+struct Intersection_options {
+    /// Seed of every random choice of the query. The same seed gives the same answer, points and
+    /// counters on every platform and for any number of concurrent queries.
+    std::uint64_t seed = 0x5eed;
+    /// The tolerance epsilon on |f| (world units): the interpolation search stops at a path point
+    /// with |f| <= epsilon; the refinement accepts points with max(|f_A|, |f_B|) <= epsilon; the
+    /// randomized sampling reports samples with both |f| < epsilon. Unset (default): automatic, a
+    /// fraction of the smaller sampling radius r (Interpolation_search and the refinement: 0.05 r;
+    /// Randomized_sampling: its own default, see there). When set: finite and > 0.
+    std::optional<double> epsilon = std::nullopt;
+    /// The region searched (default: overlapping hierarchy leaves).
+    Overlap_region region = Overlap_region::leaf_boxes;
+    /// Refinement of the points of intersection_points() (do_intersect() never refines: it answers
+    /// at the first AIP). Default: projection.
+    Refinement refinement = Refinement::projection;
+    /// intersection_points(): the smallest distance between two returned points (world units); the
+    /// caller's density along the curves. Unset (default): the larger mean spacing of the two clouds.
+    /// When set: finite and > 0.
+    std::optional<double> point_spacing = std::nullopt;
+    /// Largest number of refinement samples per point with Refinement::sampling (default 64).
+    std::size_t refinement_samples = 64;
+    /// Budget: the query stops once it has evaluated f this many times, with
+    /// Intersection_status::budget_exhausted if nothing was found. Unset (default): no budget. When
+    /// set: >= 1.
+    std::optional<std::size_t> max_f_evaluations = std::nullopt;
+    /// Sample both roles (points of A tested against f_B, then points of B against f_A). Default
+    /// true; false samples only the object with fewer candidate points.
+    bool symmetric = true;
+};
+
+namespace internal {
+
+inline void check_options(const Intersection_options& o, const char* function)
+{
+    if (o.epsilon && !(std::isfinite(*o.epsilon) && *o.epsilon > 0.0))
+        throw Invalid_input(concat(function, ": epsilon ", *o.epsilon, " must be finite and > 0 (leave it unset for the automatic value)"));
+    if (o.point_spacing && !(std::isfinite(*o.point_spacing) && *o.point_spacing > 0.0))
+        throw Invalid_input(concat(function, ": point_spacing ", *o.point_spacing,
+                                   " must be finite and > 0 (leave it unset for the automatic value)"));
+    if (o.max_f_evaluations && *o.max_f_evaluations == 0)
+        throw Invalid_input(concat(function, ": a budget of zero f evaluations (max_f_evaluations = 0) cannot answer; leave it unset for no budget"));
+    if (o.refinement == Refinement::sampling && o.refinement_samples == 0)
+        throw Invalid_input(concat(function, ": refinement_samples must be >= 1 with Refinement::sampling"));
+    if (o.region != Overlap_region::leaf_boxes && o.region != Overlap_region::object_boxes)
+        throw Invalid_input(concat(function, ": unknown overlap region"));
+    if (o.refinement != Refinement::none && o.refinement != Refinement::sampling &&
+        o.refinement != Refinement::projection)
+        throw Invalid_input(concat(function, ": unknown refinement"));
+}
+
+} // namespace internal
+} // namespace PCCD

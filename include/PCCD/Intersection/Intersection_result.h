@@ -1,0 +1,117 @@
+// PCCD/Intersection/Intersection_result.h -- what an intersection query returns (DESIGN.md, "Results
+// carry their evidence"): the answer, the intersection points found, and the counters the papers'
+// evaluation figures are made of (ALGORITHMS.md sections 5 and 6).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace PCCD {
+
+/// How a point of an intersection result was obtained.
+enum class Intersection_point_kind : std::uint8_t {
+    /// An approximate intersection point (AIP, ALGORITHMS.md section 6.2): on the graph edge of one
+    /// cloud where the other surface's f changes sign, linearly interpolated between its two ends.
+    approximate = 0,
+    /// Refined (section 6.3): a point where both |f_A| and |f_B| are below the refinement threshold.
+    refined = 1,
+    /// Randomized sampling (section 5): a sample where both |f_A| and |f_B| are below epsilon.
+    sampled = 2,
+};
+
+/// One point on (near) the intersection curves of the two surfaces, in world coordinates.
+struct Intersection_point {
+    Eigen::Vector3d position = Eigen::Vector3d::Zero();
+    /// f_A and f_B at `position`; NaN where they were not evaluated (approximate points: the AIP is
+    /// interpolated, f is not re-evaluated there).
+    double f_a = std::numeric_limits<double>::quiet_NaN();
+    double f_b = std::numeric_limits<double>::quiet_NaN();
+    Intersection_point_kind kind = Intersection_point_kind::approximate;
+};
+
+/// Why a query stopped.
+enum class Intersection_status : std::uint8_t {
+    /// The surfaces intersect (at least one point found).
+    intersecting = 0,
+    /// No intersection found after the whole sampling the options ask for.
+    separate = 1,
+    /// The evaluation budget ran out before an intersection was found: the answer "no" is not
+    /// backed by the full sampling.
+    budget_exhausted = 2,
+};
+
+inline const char* to_string(Intersection_status status)
+{
+    switch (status) {
+    case Intersection_status::intersecting: return "intersecting";
+    case Intersection_status::separate: return "separate";
+    case Intersection_status::budget_exhausted: return "budget_exhausted";
+    }
+    return "unknown";
+}
+
+/// Work counters of one query. Deterministic for a given seed, objects, poses and options.
+struct Intersection_counters {
+    /// Evaluations of f_A or f_B, defined or not (the figure of WSCG05 Fig. 11).
+    std::size_t f_evaluations = 0;
+    /// Root bracketing: sample points that had a partner search (f of the other surface defined
+    /// and small enough for a sign change within reach), and partner candidates evaluated.
+    std::size_t brackets_tried = 0;
+    std::size_t partner_candidates = 0;
+    /// Brackets found: pairs with opposite signs of f.
+    std::size_t brackets_found = 0;
+    /// Steps of the interpolation search (each one f evaluation).
+    std::size_t search_steps = 0;
+    /// Steps that fell back to bisection.
+    std::size_t bisection_steps = 0;
+    /// Sample points drawn: cloud points (interpolation search) or points in space (RST).
+    std::size_t samples = 0;
+    /// Points of the two clouds inside the overlap region (the sets sampled from).
+    std::size_t candidate_points = 0;
+    /// Samples drawn by the refinement.
+    std::size_t refinement_samples = 0;
+    /// Hierarchy traversal: node pairs tested and leaf pairs found overlapping. The interpolation
+    /// search traverses only when it enumerates its region (after its rejection phase found the
+    /// region small): a first hit in a deep overlap reports 0 leaf pairs.
+    std::size_t node_pairs = 0;
+    std::size_t leaf_pairs = 0;
+
+    Intersection_counters& operator+=(const Intersection_counters& o)
+    {
+        f_evaluations += o.f_evaluations;
+        brackets_tried += o.brackets_tried;
+        partner_candidates += o.partner_candidates;
+        brackets_found += o.brackets_found;
+        search_steps += o.search_steps;
+        bisection_steps += o.bisection_steps;
+        samples += o.samples;
+        candidate_points += o.candidate_points;
+        refinement_samples += o.refinement_samples;
+        node_pairs += o.node_pairs;
+        leaf_pairs += o.leaf_pairs;
+        return *this;
+    }
+    friend bool operator==(const Intersection_counters&, const Intersection_counters&) = default;
+};
+
+/// The result of do_intersect() and intersection_points().
+struct Intersection_result {
+    /// True when an intersection was found.
+    bool intersects = false;
+    Intersection_status status = Intersection_status::separate;
+    /// Points on the intersection curves, world coordinates (one for do_intersect(), the first
+    /// found; a set with the requested spacing for intersection_points()).
+    std::vector<Intersection_point> points;
+    Intersection_counters counters;
+    /// Randomized sampling only: the smallest max(|f_A|, |f_B|) over its samples (an estimate of how
+    /// far the surfaces are from touching); +infinity when no sample had both defined.
+    double closest_estimate = 0.0;
+
+    explicit operator bool() const { return intersects; }
+};
+
+} // namespace PCCD

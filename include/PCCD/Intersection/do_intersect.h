@@ -1,0 +1,99 @@
+// PCCD/Intersection/do_intersect.h -- the public entry points of the stochastic intersection
+// (ALGORITHMS.md sections 5 and 6; DESIGN.md "query"): do_intersect() answers at the first
+// intersection found, intersection_points() samples the intersection curves at a chosen spacing.
+// Objects are preprocessed once (Point_cloud_object) and posed by rigid transforms per query.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <PCCD/Error.h>
+#include <PCCD/Intersection/Interpolation_search.h>
+#include <PCCD/Intersection/Intersection_options.h>
+#include <PCCD/Intersection/Intersection_result.h>
+#include <PCCD/Intersection/Randomized_sampling.h>
+#include <PCCD/Intersection/internal/Query_state.h>
+#include <PCCD/Intersection/refinement.h>
+#include <PCCD/Rigid_transform_3.h>
+#include <PCCD/concepts/CollisionObject.h>
+
+namespace PCCD {
+namespace internal {
+
+template <class A, class B, class Policy>
+Intersection_result run_query(const A& a, const Rigid_transform_3<double>& pose_a, const B& b,
+                              const Rigid_transform_3<double>& pose_b, const Intersection_options& options,
+                              const Policy& policy, bool first_hit, const char* function)
+{
+    check_options(options, function);
+    policy.check();
+    const Posed_object<A> pa(a, pose_a);
+    const Posed_object<B> pb(b, pose_b);
+    const double r_min = std::min(pa.sampling_radius(), pb.sampling_radius());
+    const double epsilon = options.epsilon.value_or(policy.default_epsilon(r_min));
+    const double spacing = options.point_spacing.value_or(std::max(pa.sampling_radius(), pb.sampling_radius()));
+    if (!(std::isfinite(epsilon) && epsilon > 0.0))
+        throw Invalid_input(concat(function, ": the automatic epsilon ", epsilon, " is not positive"));
+
+    Intersection_result result;
+    Query_state state(options.seed, options.max_f_evaluations, first_hit, spacing, result.points);
+    policy.run(pa, pb, options, epsilon, state, result.closest_estimate);
+
+    if (!first_hit && options.refinement != Refinement::none) {
+        // Refine every approximate point; a point that does not converge stays an AIP.
+        for (Intersection_point& p : result.points) {
+            if (p.kind != Intersection_point_kind::approximate || state.out_of_budget()) continue;
+            const double radius = 2.0 * spacing;
+            const std::optional<Intersection_point> refined =
+                options.refinement == Refinement::projection
+                    ? refine_by_projection(pa, pb, p.position, radius, epsilon, state)
+                    : refine_by_sampling(pa, pb, p.position, 0.5 * spacing, epsilon, options.refinement_samples, state);
+            if (refined) p = *refined;
+        }
+    }
+    result.intersects = !result.points.empty();
+    result.status = result.intersects  ? Intersection_status::intersecting
+                    : state.budget_hit ? Intersection_status::budget_exhausted
+                                       : Intersection_status::separate;
+    result.counters = state.counters;
+    return result;
+}
+
+} // namespace internal
+
+/// Whether the surfaces of `a` posed by `pose_a` and `b` posed by `pose_b` intersect: stops at the
+/// first intersection point found, which the result carries (an AIP for Interpolation_search, a
+/// sample for Randomized_sampling), with the query's counters.
+///
+/// \tparam A, B models of CollisionObject (Point_cloud_object<K>).
+/// \tparam Policy a model of LeafIntersector: Interpolation_search (default) or Randomized_sampling.
+/// \param pose_a, pose_b rigid motions from each object's local frame to the world
+///        (Rigid_transform_3 rejects non-rigid matrices when it is built).
+/// \throws Invalid_input for invalid options or policy parameters (message names the field).
+/// Thread safety: the objects are only read; any number of queries may run concurrently on the same
+/// objects. The answer, points and counters depend only on the arguments (seed included).
+/// Complexity: see Interpolation_search / Randomized_sampling; O(1) allocations per query besides
+/// the candidate lists.
+template <CollisionObject A, CollisionObject B, LeafIntersector Policy = Interpolation_search>
+Intersection_result do_intersect(const A& a, const Rigid_transform_3<double>& pose_a, const B& b,
+                                 const Rigid_transform_3<double>& pose_b, const Intersection_options& options = {},
+                                 const Policy& policy = Policy())
+{
+    return internal::run_query(a, pose_a, b, pose_b, options, policy, true, "do_intersect");
+}
+
+/// Points on the intersection curves of the two posed surfaces, no two closer than
+/// options.point_spacing, refined as options.refinement says (world coordinates). The whole sample
+/// the policy asks for is searched (no early stop). Same parameters, guarantees and exceptions as
+/// do_intersect().
+template <CollisionObject A, CollisionObject B, LeafIntersector Policy = Interpolation_search>
+Intersection_result intersection_points(const A& a, const Rigid_transform_3<double>& pose_a, const B& b,
+                                        const Rigid_transform_3<double>& pose_b,
+                                        const Intersection_options& options = {}, const Policy& policy = Policy())
+{
+    return internal::run_query(a, pose_a, b, pose_b, options, policy, false, "intersection_points");
+}
+
+} // namespace PCCD

@@ -1,0 +1,150 @@
+// PCCD/Intersection/internal/Query_state.h -- the mutable state of one intersection query: counters,
+// budget, random engine, and the sink that collects the output points at the requested spacing.
+// Internal to do_intersect.h and the leaf intersector policies.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <unordered_map>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include <PCCD/Intersection/Intersection_result.h>
+#include <PCCD/Random.h>
+#include <PCCD/Rigid_transform_3.h>
+#include <PCCD/Surface/WLS_surface.h>
+
+namespace PCCD::internal {
+
+/// One object of a query with its pose: evaluations of its surface at world or local points, with
+/// the evaluation counted.
+template <class Object>
+struct Posed_object {
+    const Object* object;
+    Rigid_transform_3<double> to_world;
+    Rigid_transform_3<double> from_world;
+
+    Posed_object(const Object& o, const Rigid_transform_3<double>& pose)
+        : object(&o), to_world(pose), from_world(pose.inverse())
+    {
+    }
+    /// Local position of cloud point i.
+    Eigen::Vector3d position(std::uint32_t i) const { return object->cloud().position(i).template cast<double>(); }
+    std::size_t size() const { return object->size(); }
+    double sampling_radius() const { return object->sampling_radius(); }
+    double support_radius() const { return object->surface().support_radius(); }
+};
+
+/// Collects output points: keeps a point only if no kept point lies within `spacing` (a hash grid
+/// of cell `spacing`), and tells the query to stop at the first point in first-hit mode.
+class Point_sink {
+public:
+    Point_sink(bool first_hit, double spacing, std::vector<Intersection_point>& out)
+        : m_first_hit(first_hit), m_spacing(spacing), m_out(&out)
+    {
+    }
+
+    bool first_hit() const { return m_first_hit; }
+    double spacing() const { return m_spacing; }
+    bool done() const { return m_first_hit && !m_out->empty(); }
+    std::size_t size() const { return m_out->size(); }
+
+    /// True when a kept point lies within `radius` of x (always false in first-hit mode, where
+    /// nothing is kept before the query stops).
+    bool near(const Eigen::Vector3d& x, double radius) const
+    {
+        if (m_out->empty() || m_first_hit) return false;
+        const int reach = int(std::ceil(radius / m_spacing));
+        const Cell c = cell_of(x);
+        if (reach > 2) { // a wide radius: scan the points (rare; only for huge radii)
+            for (const Intersection_point& p : *m_out)
+                if ((p.position - x).squaredNorm() <= radius * radius) return true;
+            return false;
+        }
+        for (int dx = -reach; dx <= reach; ++dx)
+            for (int dy = -reach; dy <= reach; ++dy)
+                for (int dz = -reach; dz <= reach; ++dz) {
+                    const auto it = m_grid.find(key(Cell{c.x + dx, c.y + dy, c.z + dz}));
+                    if (it == m_grid.end()) continue;
+                    for (std::uint32_t k : it->second)
+                        if (((*m_out)[k].position - x).squaredNorm() <= radius * radius) return true;
+                }
+        return false;
+    }
+
+    /// Adds p unless a kept point is closer than the spacing. Returns true if it was kept.
+    bool add(const Intersection_point& p)
+    {
+        if (done()) return false;
+        if (!m_first_hit && near(p.position, m_spacing)) return false;
+        m_grid[key(cell_of(p.position))].push_back(std::uint32_t(m_out->size()));
+        m_out->push_back(p);
+        return true;
+    }
+
+private:
+    struct Cell {
+        std::int64_t x, y, z;
+    };
+    Cell cell_of(const Eigen::Vector3d& x) const
+    {
+        return Cell{std::int64_t(std::floor(x.x() / m_spacing)), std::int64_t(std::floor(x.y() / m_spacing)),
+                    std::int64_t(std::floor(x.z() / m_spacing))};
+    }
+    static std::uint64_t key(const Cell& c)
+    {
+        // Cells of finite coordinates of bounded objects: 21 bits per axis are plenty; wrap otherwise
+        // (a collision only costs an extra distance test).
+        const auto part = [](std::int64_t v) { return std::uint64_t(v) & ((std::uint64_t(1) << 21) - 1); };
+        return part(c.x) | (part(c.y) << 21) | (part(c.z) << 42);
+    }
+
+    bool m_first_hit;
+    double m_spacing;
+    std::vector<Intersection_point>* m_out;
+    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> m_grid;
+};
+
+/// Counters, budget, engine and sink of one query.
+struct Query_state {
+    Intersection_counters counters;
+    std::optional<std::size_t> budget;
+    bool budget_hit = false;
+    Random_engine engine;
+    Point_sink sink;
+
+    Query_state(std::uint64_t seed, std::optional<std::size_t> max_f, bool first_hit, double spacing,
+                std::vector<Intersection_point>& out)
+        : budget(max_f), engine(seed), sink(first_hit, spacing, out)
+    {
+    }
+
+    /// True (and remembered) once the budget is spent.
+    bool out_of_budget()
+    {
+        if (budget && counters.f_evaluations >= *budget) budget_hit = true;
+        return budget_hit;
+    }
+    /// The query should stop: first hit found or budget spent.
+    bool stop() { return sink.done() || out_of_budget(); }
+
+    /// f of `target` at the world point x, counted.
+    template <class Object>
+    Surface_evaluation evaluate_world(const Posed_object<Object>& target, const Eigen::Vector3d& x)
+    {
+        ++counters.f_evaluations;
+        return target.object->surface().evaluate(target.from_world.transform_point(x));
+    }
+    /// f of `target` at the point x of its own frame, counted.
+    template <class Object>
+    Surface_evaluation evaluate_local(const Posed_object<Object>& target, const Eigen::Vector3d& x)
+    {
+        ++counters.f_evaluations;
+        return target.object->surface().evaluate(x);
+    }
+};
+
+} // namespace PCCD::internal

@@ -1,0 +1,265 @@
+// PCCD/Intersection/internal/overlap_region.h -- the part of the overlap of two objects a query
+// searches (ALGORITHMS.md section 6, "Box(A,B)"): the points of one object that lie in the other's
+// leaf boxes (or root box) grown by a margin, and the boxes where randomized sampling draws.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <PCCD/Hierarchy/Point_cloud_hierarchy.h>
+#include <PCCD/Hierarchy/overlapping_leaves.h>
+#include <PCCD/Intersection/Intersection_options.h>
+#include <PCCD/Intersection/Intersection_result.h>
+#include <PCCD/Random.h>
+#include <PCCD/Rigid_transform_3.h>
+
+namespace PCCD::internal {
+
+/// Calls `visit(node_s, node_t)` for the leaf pairs of the region: overlapping leaves of both
+/// hierarchies (leaf_boxes) or leaves of s against t's root (object_boxes).
+/// t's descent stops at nodes no larger than `t_stop_size`.
+template <class Visitor>
+void for_each_region_pair(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t,
+                          const Rigid_transform_3<double>& s_to_t, double margin, Overlap_region region,
+                          Intersection_counters& counters, Visitor&& visit, double t_stop_size = 0.0)
+{
+    if (region == Overlap_region::leaf_boxes) {
+        const Traversal_counters c = for_each_overlapping_leaf_pair(s, t, s_to_t, margin, visit, t_stop_size);
+        counters.node_pairs += c.node_pairs;
+        counters.leaf_pairs += c.leaf_pairs;
+        return;
+    }
+    // Object boxes: s's leaves against t's root box only.
+    std::vector<Point_cloud_hierarchy::Index> stack{0};
+    const Eigen::AlignedBox3d& root = t.root().box;
+    while (!stack.empty()) {
+        const auto i = stack.back();
+        stack.pop_back();
+        ++counters.node_pairs;
+        if (!boxes_may_overlap(s.node(i).box, s_to_t, root, margin)) continue;
+        if (s.node(i).is_leaf()) {
+            ++counters.leaf_pairs;
+            visit(i, Point_cloud_hierarchy::Index(0));
+        } else {
+            stack.push_back(s.right(i));
+            stack.push_back(s.left(i));
+        }
+    }
+}
+
+/// The points of s (indices) whose position, mapped by s_to_t, lies in a region box of t grown by
+/// `margin` (see in_region()), in a deterministic order (by leaf of s, then by the leaf's point
+/// order). `position(i)` gives s's local coordinates. The sampler below draws from the same set.
+template <class Position>
+std::vector<std::uint32_t> region_points(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t,
+                                         const Rigid_transform_3<double>& s_to_t, double margin, Overlap_region region,
+                                         const Position& position, Intersection_counters& counters);
+
+/// Whether the point q (t's frame) lies in a region box of t's subtree at `node`, grown by
+/// `margin`: a leaf box (leaf_boxes) or the root box (object_boxes). O(height) boxes for points near
+/// one leaf, more where grown boxes overlap.
+inline bool in_region(const Point_cloud_hierarchy& t, Point_cloud_hierarchy::Index node, const Eigen::Vector3d& q,
+                      double margin, Overlap_region region)
+{
+    const auto inside = [&](const Eigen::AlignedBox3d& box) {
+        return (q.array() >= box.min().array() - margin).all() && (q.array() <= box.max().array() + margin).all();
+    };
+    if (region == Overlap_region::object_boxes) return inside(t.root().box);
+    Point_cloud_hierarchy::Index stack[64];
+    int top = 0;
+    stack[top++] = node;
+    while (top > 0) {
+        const auto i = stack[--top];
+        if (!inside(t.node(i).box)) continue;
+        if (t.node(i).is_leaf()) return true;
+        if (top + 2 > 64) return true; // deeper than any balanced tree of < 2^32 points: stay conservative
+        stack[top++] = t.right(i);
+        stack[top++] = t.left(i);
+    }
+    return false;
+}
+
+template <class Position>
+std::vector<std::uint32_t> region_points(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t,
+                                         const Rigid_transform_3<double>& s_to_t, double margin, Overlap_region region,
+                                         const Position& position, Intersection_counters& counters)
+{
+    using Index = Point_cloud_hierarchy::Index;
+    std::vector<std::pair<Index, Index>> pairs;
+    // t is descended to nodes of about twice the margin only: finer boxes prune little more and
+    // multiply the pairs; in_region() finishes the test per point.
+    for_each_region_pair(
+        s, t, s_to_t, margin, region, counters, [&](Index i, Index j) { pairs.emplace_back(i, j); }, 2.0 * margin);
+    std::stable_sort(pairs.begin(), pairs.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    std::vector<std::uint32_t> points;
+    for (std::size_t k = 0; k < pairs.size();) {
+        std::size_t end = k;
+        while (end < pairs.size() && pairs[end].first == pairs[k].first) ++end;
+        for (std::uint32_t p : s.points_of(pairs[k].first)) {
+            const Eigen::Vector3d q = s_to_t.transform_point(position(p));
+            for (std::size_t m = k; m < end; ++m)
+                if (in_region(t, pairs[m].second, q, margin, region)) {
+                    points.push_back(p);
+                    break;
+                }
+        }
+        k = end;
+    }
+    return points;
+}
+
+/// Draws the points of s in the region (points whose position, mapped into t's frame, lies in a
+/// leaf box of t grown by `margin`) one at a time, uniformly at random without replacement.
+///
+/// Two phases keep a first-hit query cheap when the objects overlap deeply and exact when they barely
+/// touch: first, rejection sampling from all of s, testing each drawn point against t's hierarchy
+/// (O(log N) each); once fewer than a quarter of the draws land in the region (after 64 draws), the
+/// region is enumerated through the overlapping leaf pairs, minus the points already drawn, and
+/// drawn from that list. Both phases draw uniformly from the region points not yet drawn, so the
+/// sequence is a uniform random permutation of the region either way.
+template <class Position>
+class Region_sampler {
+public:
+    Region_sampler(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t, const Rigid_transform_3<double>& s_to_t,
+                   double margin, Overlap_region region, const Position& position, Intersection_counters& counters)
+        : m_s(&s), m_t(&t), m_s_to_t(s_to_t), m_margin(margin), m_region(region), m_position(position),
+          m_counters(&counters), m_size(s.size())
+    {
+        // A pair of disjoint objects needs no draws at all.
+        m_empty = !boxes_may_overlap(s.root().box, s_to_t, t.root().box, margin);
+        ++counters.node_pairs;
+    }
+
+    /// The next region point, or false when the region is exhausted.
+    bool next(Random_engine& engine, std::uint32_t& point)
+    {
+        if (m_empty) return false;
+        while (!m_enumerated) {
+            if (m_drawn == m_size) return false;
+            if (m_drawn >= 64 && 4 * m_accepted < m_drawn) {
+                enumerate();
+                break;
+            }
+            const std::uint32_t p = draw_from_all(engine);
+            const Eigen::Vector3d q = m_s_to_t.transform_point(m_position(p));
+            if (in_region(*m_t, 0, q, m_margin, m_region)) {
+                ++m_accepted;
+                ++m_counters->candidate_points;
+                point = p;
+                return true;
+            }
+        }
+        if (m_next == m_list.size()) return false;
+        const std::size_t pick = m_next + std::size_t(uniform_index(engine, m_list.size() - m_next));
+        std::swap(m_list[m_next], m_list[pick]);
+        point = m_list[m_next++];
+        return true;
+    }
+
+    /// The number of region points, once known (after enumeration or when all of s was drawn);
+    /// otherwise an estimate from the acceptance rate so far.
+    double region_size() const
+    {
+        if (m_empty) return 0.0;
+        if (m_enumerated) return double(m_accepted + m_list.size());
+        if (m_drawn == 0) return double(m_size);
+        return double(m_size) * double(m_accepted) / double(m_drawn);
+    }
+    /// True when region_size() is exact.
+    bool region_size_known() const { return m_empty || m_enumerated || m_drawn == m_size; }
+    std::size_t accepted() const { return m_accepted + (m_enumerated ? m_next : 0); }
+
+private:
+    std::uint32_t draw_from_all(Random_engine& engine)
+    {
+        // Sparse Fisher-Yates over [0, size): m_swapped holds the displaced entries.
+        const std::size_t pick = m_drawn + std::size_t(uniform_index(engine, m_size - m_drawn));
+        const auto value_at = [&](std::size_t k) {
+            const auto it = m_swapped.find(std::uint32_t(k));
+            return it == m_swapped.end() ? std::uint32_t(k) : it->second;
+        };
+        const std::uint32_t chosen = value_at(pick);
+        m_swapped[std::uint32_t(pick)] = value_at(m_drawn);
+        m_drawn_points.push_back(chosen);
+        ++m_drawn;
+        return chosen;
+    }
+
+    void enumerate()
+    {
+        m_enumerated = true;
+        std::sort(m_drawn_points.begin(), m_drawn_points.end());
+        m_list = region_points(*m_s, *m_t, m_s_to_t, m_margin, m_region, m_position, *m_counters);
+        std::erase_if(m_list, [&](std::uint32_t p) {
+            return std::binary_search(m_drawn_points.begin(), m_drawn_points.end(), p);
+        });
+        m_counters->candidate_points += m_list.size();
+    }
+
+    const Point_cloud_hierarchy* m_s;
+    const Point_cloud_hierarchy* m_t;
+    Rigid_transform_3<double> m_s_to_t;
+    double m_margin;
+    Overlap_region m_region;
+    Position m_position;
+    Intersection_counters* m_counters;
+    std::size_t m_size;
+    bool m_empty = false;
+    bool m_enumerated = false;
+    std::size_t m_drawn = 0, m_accepted = 0, m_next = 0;
+    std::unordered_map<std::uint32_t, std::uint32_t> m_swapped;
+    std::vector<std::uint32_t> m_drawn_points;
+    std::vector<std::uint32_t> m_list;
+};
+
+/// A box of the randomized sampling, in t's frame, and its volume.
+struct Sampling_box {
+    Eigen::AlignedBox3d box;
+    double volume;
+};
+
+/// The boxes where randomized sampling draws, in t's frame: for each pair of overlapping leaves
+/// (leaf_boxes), or for the two root boxes (object_boxes: WSCG05's Box(A, B)), the bounding box of
+/// s's box mapped into t's frame intersected with t's box grown by `margin`. Empty intersections
+/// are dropped.
+inline std::vector<Sampling_box> sampling_boxes(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t,
+                                                const Rigid_transform_3<double>& s_to_t, double margin,
+                                                Overlap_region region, Intersection_counters& counters)
+{
+    using Index = Point_cloud_hierarchy::Index;
+    std::vector<Sampling_box> boxes;
+    const Eigen::Matrix3d abs_r = s_to_t.rotation().cwiseAbs();
+    const Eigen::Vector3d grow = Eigen::Vector3d::Constant(margin);
+    const auto add = [&](Index i, Index j) {
+        const Eigen::AlignedBox3d& bs = s.node(i).box;
+        const Eigen::Vector3d centre = s_to_t.transform_point(0.5 * (bs.min() + bs.max()));
+        const Eigen::Vector3d half = abs_r * (0.5 * (bs.max() - bs.min())) + grow;
+        Eigen::AlignedBox3d mapped(centre - half, centre + half);
+        const Eigen::AlignedBox3d& bt = t.node(j).box;
+        const Eigen::AlignedBox3d grown(bt.min() - grow, bt.max() + grow);
+        const Eigen::AlignedBox3d both = mapped.intersection(grown);
+        if (both.isEmpty()) return;
+        const double volume = both.sizes().prod();
+        if (volume > 0.0) boxes.push_back({both, volume});
+    };
+    if (region == Overlap_region::object_boxes) {
+        // WSCG05's Box(A, B): the two root boxes only.
+        ++counters.node_pairs;
+        if (boxes_may_overlap(s.root().box, s_to_t, t.root().box, margin)) {
+            ++counters.leaf_pairs;
+            add(0, 0);
+        }
+        return boxes;
+    }
+    for_each_region_pair(s, t, s_to_t, margin, region, counters, add);
+    return boxes;
+}
+
+} // namespace PCCD::internal

@@ -1,0 +1,280 @@
+// Bad-input catalogue, serialized objects (doc/reliability.md): files written by
+// Point_cloud_object::save() and write_geodesic_data(), truncated at many offsets, with single
+// bytes corrupted at many offsets, of another version, with a wrong magic, empty, and -- with the
+// checksum recomputed, as a buggy or malicious writer would -- with inconsistent content. Every
+// case must throw File_error naming the file and the problem; none may crash.
+#include "robustness_helpers.h"
+
+#include <PCCD/Geodesic/geodesic_io.h>
+#include <PCCD/Point_cloud_object.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <set>
+#include <string>
+#include <vector>
+
+using namespace pccd_robustness;
+
+namespace {
+
+using Object = PCCD::Point_cloud_object<>;
+
+std::string path_of(const std::string& name) { return scratch_path("serialized", name); }
+
+/// The offsets to damage in a file of `size` bytes: every byte of the first `head` ones, then about
+/// `strided` more spread evenly, and the last 16.
+std::set<std::size_t> offsets(std::size_t size, std::size_t head = 160, std::size_t strided = 160)
+{
+    std::set<std::size_t> result;
+    for (std::size_t i = 0; i < std::min(size, head); ++i) result.insert(i);
+    for (std::size_t k = 0; k < strided; ++k) result.insert(head + k * (size - head) / strided);
+    for (std::size_t i = size > 16 ? size - 16 : 0; i < size; ++i) result.insert(i);
+    return result;
+}
+
+/// Recomputes the trailing checksum of a PCCD binary file (FNV-1a over 64-bit words of everything
+/// before it), so that a crafted file gets past the checksum to the structural checks.
+void reseal(std::string& bytes)
+{
+    PCCD::internal::Word_checksum checksum;
+    checksum.update(bytes.data(), bytes.size() - 8);
+    const std::uint64_t value = checksum.value();
+    std::memcpy(bytes.data() + bytes.size() - 8, &value, 8);
+}
+
+template <class T>
+void put(std::string& bytes, std::size_t at, T value)
+{
+    REQUIRE(at + sizeof value <= bytes.size());
+    std::memcpy(bytes.data() + at, &value, sizeof value);
+}
+
+template <class T>
+T get(const std::string& bytes, std::size_t at)
+{
+    T value;
+    std::memcpy(&value, bytes.data() + at, sizeof value);
+    return value;
+}
+
+const Object& small_object()
+{
+    static const Object object(fibonacci_sphere(120));
+    return object;
+}
+
+const std::string& object_bytes()
+{
+    static const std::string bytes = [] {
+        const std::string path = path_of("good.pccdobj");
+        small_object().save(path);
+        return read_bytes(path);
+    }();
+    return bytes;
+}
+
+/// Field offsets of an object file (format version 1, see Point_cloud_object.h), found from its end
+/// so that they do not depend on the number of timing fields.
+struct Object_layout {
+    std::size_t n, sampling_radius = 24, bandwidth = 32, theta_eps = 40, points, normals, geodesic_size, geodesic;
+};
+
+Object_layout object_layout(const std::string& bytes, std::size_t n)
+{
+    // ... | points 24N | normals 24N | u64 G | G bytes | u64 checksum: find G from the end.
+    for (std::size_t at = bytes.size() - 16; at > 16; --at) {
+        const auto g = get<std::uint64_t>(bytes, at);
+        if (at + 8 + g + 8 == bytes.size() && at >= 48 * n) {
+            const std::size_t normals = at - 24 * n;
+            const std::size_t points = normals - 24 * n;
+            if (get<std::uint64_t>(bytes, 16) == n)
+                return {n, 24, 32, 40, points, normals, at, at + 8};
+        }
+    }
+    FAIL("object file layout not recognised");
+    return {};
+}
+
+void require_load_error(const std::string& name, const std::string& bytes, const std::vector<std::string>& keywords)
+{
+    const std::string path = path_of(name);
+    write_bytes(path, bytes);
+    require_file_error(path, [&] { (void)Object::load(path); }, keywords);
+}
+
+void require_geodesic_error(const std::string& name, const std::string& bytes, const std::vector<std::string>& keywords)
+{
+    const std::string path = path_of(name);
+    write_bytes(path, bytes);
+    require_file_error(path, [&] { (void)PCCD::read_geodesic_data(path); }, keywords);
+}
+
+} // namespace
+
+TEST_CASE("serialized objects: empty, foreign, other version and byte order", "[robustness]")
+{
+    const std::string& good = object_bytes();
+    require_load_error("empty.pccdobj", "", {"truncated file"});
+    require_load_error("seven.pccdobj", good.substr(0, 7), {"truncated file"});
+    require_load_error("text.pccdobj", "ply\nformat ascii 1.0\nelement vertex 0\nend_header\n", {"not a PCCD object file"});
+    std::string magic = good;
+    magic[3] = 'X';
+    require_load_error("magic.pccdobj", magic, {"not a PCCD object file"});
+    // A geodesic file is not an object file, and the other way round.
+    const std::string geodesic_path = path_of("good.pccdgeo");
+    PCCD::write_geodesic_data(geodesic_path, small_object().graph(), small_object().cpsp());
+    require_load_error("geodesic_as_object.pccdobj", read_bytes(geodesic_path), {"not a PCCD object file"});
+    require_geodesic_error("object_as_geodesic.pccdgeo", good, {"not a PCCD geodesic file"});
+    for (const std::uint32_t version : {0u, 2u, 0xffffffffu}) {
+        std::string other = good;
+        put(other, 8, version);
+        require_load_error("version.pccdobj", other, {"object file format version " + std::to_string(version), "reads version 1"});
+        reseal(other);
+        require_load_error("version.pccdobj", other, {"object file format version " + std::to_string(version)});
+    }
+    std::string swapped = good;
+    put(swapped, 12, std::uint32_t(0x04030201));
+    require_load_error("byte_order.pccdobj", swapped, {"another byte order"});
+    const std::string missing = path_of("missing.pccdobj");
+    std::filesystem::remove(missing);
+    require_file_error(missing, [&] { (void)Object::load(missing); }, {"cannot open the file"});
+}
+
+TEST_CASE("serialized objects: truncated at many offsets", "[robustness]")
+{
+    const std::string& good = object_bytes();
+    const std::string path = path_of("truncated.pccdobj");
+    std::size_t cases = 0;
+    for (const std::size_t size : offsets(good.size())) {
+        INFO("truncated to " << size << " of " << good.size() << " bytes");
+        write_bytes(path, good.substr(0, size));
+        // Before the byte-order mark the reader cannot tell more than "truncated"; after it the
+        // checksum (the last 8 bytes are no longer the checksum) catches it.
+        require_file_error(path, [&] { (void)Object::load(path); }, {size < 16 ? "truncated file" : ""});
+        ++cases;
+    }
+    CHECK(cases > 300);
+}
+
+TEST_CASE("serialized objects: single bytes corrupted at many offsets", "[robustness]")
+{
+    const std::string& good = object_bytes();
+    const std::string path = path_of("corrupted.pccdobj");
+    for (const std::size_t at : offsets(good.size()))
+        for (const unsigned char mask : {0x01, 0x80, 0xff}) {
+            INFO("byte " << at << " xor " << int(mask));
+            std::string bad = good;
+            bad[at] = char(bad[at] ^ mask);
+            write_bytes(path, bad);
+            // The magic, version and byte-order mark are read first; everything else is caught by
+            // the checksum.
+            const char* keyword = at < 8 ? "not a PCCD object file" : at < 12 ? "format version" : at < 16 ? "byte order" : "checksum mismatch";
+            require_file_error(path, [&] { (void)Object::load(path); }, {keyword});
+        }
+}
+
+TEST_CASE("serialized objects: inconsistent content behind a valid checksum", "[robustness]")
+{
+    const std::string& good = object_bytes();
+    const std::size_t n = small_object().size();
+    const Object_layout at = object_layout(good, n);
+    const auto crafted = [&](const std::string& name, auto&& edit, const std::vector<std::string>& keywords) {
+        std::string bytes = good;
+        edit(bytes);
+        reseal(bytes);
+        INFO("crafted file " << name);
+        require_load_error(name + ".pccdobj", bytes, keywords);
+    };
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    for (const std::uint64_t count : {std::uint64_t(0), std::uint64_t(1), std::uint64_t(1) << 40, ~std::uint64_t(0)})
+        crafted("count", [&](std::string& b) { put(b, 16, count); }, {"inconsistent point count " + std::to_string(count)});
+    // A count off by one moves every later field: the geodesic section's size no longer fits.
+    for (const std::uint64_t count : {n - 1, n + 1})
+        crafted("count_off_by_one", [&](std::string& b) { put(b, 16, count); }, {"inconsistent size of the geodesic section"});
+    for (const double r : {0.0, -1.0, nan, inf})
+        crafted("radius", [&](std::string& b) { put(b, at.sampling_radius, r); }, {"invalid sampling radius"});
+    for (const double h : {0.0, -1.0, nan, inf, 1e300})
+        crafted("bandwidth", [&](std::string& b) { put(b, at.bandwidth, h); }, {"inconsistent content", "Gaussian weight"});
+    // A bandwidth larger than the stored CPSP map supports.
+    crafted("bandwidth_too_wide", [&](std::string& b) { put(b, at.bandwidth, 10.0 * small_object().bandwidth()); },
+            {"inconsistent content", "exceeds the largest radius"});
+    for (const double theta : {0.0, 1.0, nan})
+        crafted("theta", [&](std::string& b) { put(b, at.theta_eps, theta); }, {"inconsistent content", "theta_eps"});
+    for (const double bad : {nan, inf}) {
+        crafted("point", [&](std::string& b) { put(b, at.points + 8 * (3 * 17 + 1), bad); },
+                {"inconsistent content", "point 17 has a non-finite coordinate"});
+        crafted("normal", [&](std::string& b) { put(b, at.normals + 8 * (3 * 5 + 2), bad); },
+                {"inconsistent content", "normal of point 5 is not finite"});
+    }
+    crafted("geodesic_size", [&](std::string& b) { put(b, at.geodesic_size, get<std::uint64_t>(b, at.geodesic_size) + 1); },
+            {"inconsistent size of the geodesic section"});
+    crafted("geodesic_size_huge", [&](std::string& b) { put(b, at.geodesic_size, ~std::uint64_t(0) - 7); },
+            {"inconsistent size of the geodesic section"});
+    crafted("geodesic_magic", [&](std::string& b) { b[at.geodesic] = 'X'; }, {"geodesic section", "not a PCCD geodesic file"});
+    crafted("geodesic_body", [&](std::string& b) { b[at.geodesic + 200] = char(b[at.geodesic + 200] ^ 1); },
+            {"geodesic section", "checksum mismatch"});
+    // The geodesic section of another object, sealed: one vertex per point is checked.
+    {
+        const Object other(fibonacci_sphere(90));
+        const std::string other_path = path_of("other.pccdobj");
+        other.save(other_path);
+        const std::string other_bytes = read_bytes(other_path);
+        const Object_layout o = object_layout(other_bytes, 90);
+        std::string spliced = good.substr(0, at.geodesic_size);
+        spliced += other_bytes.substr(o.geodesic_size, other_bytes.size() - o.geodesic_size);
+        reseal(spliced);
+        require_load_error("spliced.pccdobj", spliced, {"geodesic section does not have one vertex per point"});
+    }
+}
+
+TEST_CASE("serialized geodesic data: truncated, corrupted and crafted files", "[robustness]")
+{
+    const std::string good_path = path_of("geodesic_good.pccdgeo");
+    PCCD::write_geodesic_data(good_path, small_object().graph(), small_object().cpsp());
+    const std::string good = read_bytes(good_path);
+    const std::string path = path_of("geodesic_bad.pccdgeo");
+    require_geodesic_error("geodesic_empty.pccdgeo", "", {"truncated file"});
+    for (const std::size_t size : offsets(good.size())) {
+        INFO("truncated to " << size);
+        write_bytes(path, good.substr(0, size));
+        require_file_error(path, [&] { (void)PCCD::read_geodesic_data(path); }, {size < 8 ? "truncated file" : ""});
+    }
+    for (const std::size_t at : offsets(good.size())) {
+        INFO("byte " << at << " flipped");
+        std::string bad = good;
+        bad[at] = char(bad[at] ^ 0x40);
+        write_bytes(path, bad);
+        require_file_error(path, [&] { (void)PCCD::read_geodesic_data(path); }, {});
+    }
+    // Header fields (format in geodesic_io.h): kind at 16, parameter 17, N 21, E 29, radius 37,
+    // support 45, M 53, then the arrays from 61.
+    const std::uint64_t n = get<std::uint64_t>(good, 21);
+    REQUIRE(n == small_object().size());
+    const auto crafted = [&](const std::string& name, auto&& edit, const std::vector<std::string>& keywords) {
+        std::string bytes = good;
+        edit(bytes);
+        reseal(bytes);
+        INFO("crafted file " << name);
+        require_geodesic_error(name + ".pccdgeo", bytes, keywords);
+    };
+    crafted("version", [&](std::string& b) { put(b, 8, std::uint32_t(7)); }, {"format version 7"});
+    crafted("kind", [&](std::string& b) { b[16] = char(9); }, {"unknown graph kind 9"});
+    crafted("count", [&](std::string& b) { put(b, 21, n + 1); }, {"does not match its header"});
+    crafted("edges_huge", [&](std::string& b) { put(b, 29, ~std::uint64_t(0)); }, {"does not match its header"});
+    for (const double bad : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN()}) {
+        crafted("radius", [&](std::string& b) { put(b, 37, bad); }, {"invalid sampling radius or support"});
+        crafted("support", [&](std::string& b) { put(b, 45, bad); }, {"invalid sampling radius or support"});
+    }
+    const std::size_t rows = 61, targets = rows + 8 * (n + 1);
+    crafted("first_row", [&](std::string& b) { put(b, rows, std::uint64_t(1)); }, {"inconsistent graph offsets"});
+    crafted("target_out_of_range", [&](std::string& b) { put(b, targets, std::uint32_t(n + 5)); },
+            {"graph edge 0 points to vertex " + std::to_string(n + 5)});
+    crafted("target_changed", [&](std::string& b) { put(b, targets, get<std::uint32_t>(b, targets + 4)); },
+            {"graph"});
+}
