@@ -19,6 +19,8 @@ int main(int argc, char** argv)
     pccd_tool::register_demo(app);
     pccd_tool::register_kinetic_bench(app);
     pccd_tool::register_eval(app);
+    pccd_tool::register_collide(app);
+    pccd_tool::register_bench(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

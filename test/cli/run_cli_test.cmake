@@ -1,0 +1,155 @@
+# run_cli_test.cmake -- one test of the pccd command line, selected by CASE:
+#   cmake -DPCCD=<pccd binary> -DWORK=<dir with make_cli_data's files> -DDATA_DIR=<libcgal-demo meshes or "">
+#         -DCASE=<name> -P run_cli_test.cmake
+# Each case runs pccd, prints the command and what it wrote, then checks the exit code (0, or an
+# error exit >= 1 that is not a crash) and regular expressions on stdout + stderr. A case whose data
+# is missing prints PCCD_CLI_TEST_SKIPPED (the test's SKIP_REGULAR_EXPRESSION).
+cmake_minimum_required(VERSION 3.22)
+
+# pccd_run(OK|FAIL ARGS <pccd arguments>... [MATCH <regex>...] [NO_MATCH <regex>...]
+#          [STDOUT_MATCH <regex>...]): MATCH and NO_MATCH look at stdout + stderr, STDOUT_MATCH at
+# stdout alone.
+function(pccd_run expect)
+  cmake_parse_arguments(R "" "" "ARGS;MATCH;NO_MATCH;STDOUT_MATCH" ${ARGN})
+  execute_process(COMMAND ${PCCD} ${R_ARGS} WORKING_DIRECTORY ${WORK}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  string(REPLACE ";" " " shown "${R_ARGS}")
+  message("$ pccd ${shown}\n[exit ${rc}]\n[stdout]\n${out}[stderr]\n${err}")
+  if(expect STREQUAL "OK" AND NOT rc STREQUAL "0")
+    message(FATAL_ERROR "expected exit code 0, got ${rc}")
+  endif()
+  if(expect STREQUAL "FAIL" AND (rc STREQUAL "0" OR NOT rc MATCHES "^[0-9]+$"))
+    message(FATAL_ERROR "expected an error exit (a non-zero code, no crash), got ${rc}")
+  endif()
+  foreach(regex IN LISTS R_MATCH)
+    if(NOT "${out}${err}" MATCHES "${regex}")
+      message(FATAL_ERROR "output does not match: ${regex}")
+    endif()
+  endforeach()
+  foreach(regex IN LISTS R_STDOUT_MATCH)
+    if(NOT "${out}" MATCHES "${regex}")
+      message(FATAL_ERROR "stdout does not match: ${regex}")
+    endif()
+  endforeach()
+  foreach(regex IN LISTS R_NO_MATCH)
+    if("${out}${err}" MATCHES "${regex}")
+      message(FATAL_ERROR "output matches what it must not: ${regex}")
+    endif()
+  endforeach()
+  set(PCCD_STDOUT "${out}" PARENT_SCOPE)
+endfunction()
+
+set(identity 1 0 0 0 0 1 0 0 0 0 1 0)
+set(shift_1 1 0 0 1 0 1 0 0 0 0 1 0)
+set(shift_3 1 0 0 3 0 1 0 0 0 0 1 0)
+set(json_counters "\"f_evaluations\": [0-9]+" "\"brackets_tried\": " "\"search_steps\": " "\"samples\": "
+                  "\"candidate_points\": " "\"query_us\": [0-9.e+-]+" "\"preprocess_ms\": [0-9.e+-]+")
+
+if(CASE STREQUAL "collide_json")
+  pccd_run(OK ARGS collide sphere.xyz sphere.xyz --transform-b ${shift_1} --json
+           MATCH "\"intersects\": true" "\"status\": \"intersecting\"" "\"method\": \"isearch\"" "\"mode\": \"first\""
+                 "\"points\": 1," "\"same_object\": true" ${json_counters})
+elseif(CASE STREQUAL "collide_text")
+  pccd_run(OK ARGS collide sphere.xyz torus.ply --transform-a ${identity} --transform-b ${shift_1}
+           MATCH "A: sphere.xyz, 2000 points" "B: torus.ply, 2000 points" "answer: intersecting"
+                 "query: [0-9.]+ us, [0-9]+ f evaluations")
+elseif(CASE STREQUAL "collide_rst_separate")
+  # The transform as one quoted argument, with commas.
+  pccd_run(OK ARGS collide sphere.xyz sphere.xyz --method rst --transform-b "1,0,0,3, 0,1,0,0, 0,0,1,0" --json
+           MATCH "\"intersects\": false" "\"status\": \"separate\"" "\"method\": \"rst\"" "\"points\": 0,"
+                 ${json_counters})
+elseif(CASE STREQUAL "collide_all_out")
+  file(REMOVE ${WORK}/curve.ply)
+  pccd_run(OK ARGS collide sphere.xyz torus.ply --transform-b ${shift_1} --mode all --out curve.ply --json
+           MATCH "\"intersects\": true" "\"mode\": \"all\"" "\"points\": [1-9][0-9]*," "\"out\": \"curve.ply\"")
+  string(REGEX MATCH "\n  \"points\": ([0-9]+)," _ "${PCCD_STDOUT}") # top level, not an object's
+  set(count ${CMAKE_MATCH_1})
+  if(NOT EXISTS ${WORK}/curve.ply)
+    message(FATAL_ERROR "curve.ply was not written")
+  endif()
+  pccd_run(OK ARGS info curve.ply --json MATCH "\"points\": ${count},")
+  # No intersection: nothing to write, said so, exit 0.
+  file(REMOVE ${WORK}/none.ply)
+  pccd_run(OK ARGS collide sphere.xyz torus.ply --transform-b ${shift_3} --mode all --out none.ply
+           MATCH "no intersection points; none.ply not written")
+  if(EXISTS ${WORK}/none.ply)
+    message(FATAL_ERROR "none.ply was written for an empty result")
+  endif()
+elseif(CASE STREQUAL "collide_normalize_mesh")
+  # An OFF mesh gives its vertices; both objects are scaled into [-1, 1]^3 (the torus mesh spans
+  # [-1, 1] in x and y already, the sphere too): d = 1.5 keeps them touching, d = 3 apart.
+  pccd_run(OK ARGS collide torus_mesh.off sphere.xyz --normalize --transform-b 1 0 0 1.5 0 1 0 0 0 0 1 0 --json
+           MATCH "\"intersects\": true" "\"normalize\": true" "\"points\": 512")
+  pccd_run(OK ARGS collide torus_mesh.off sphere.xyz --normalize --transform-b 1 0 0 3 0 1 0 0 0 0 1 0 --json
+           MATCH "\"intersects\": false")
+elseif(CASE STREQUAL "collide_cases" OR CASE STREQUAL "collide_cases_rst")
+  # Header, a blank line, a comment; rows: touching, apart, and B rotated 90 degrees about z.
+  file(WRITE ${WORK}/cases.csv
+"a00,a01,a02,a03,a10,a11,a12,a13,a20,a21,a22,a23,b00,b01,b02,b03,b10,b11,b12,b13,b20,b21,b22,b23
+1,0,0,0,0,1,0,0,0,0,1,0,1,0,0,1,0,1,0,0,0,0,1,0
+
+# far apart
+1,0,0,0,0,1,0,0,0,0,1,0,1,0,0,3,0,1,0,0,0,0,1,0
+1,0,0,0,0,1,0,0,0,0,1,0,0,-1,0,0.5,1,0,0,0,0,0,1,0
+")
+  set(method isearch)
+  if(CASE STREQUAL "collide_cases_rst")
+    set(method rst)
+  endif()
+  pccd_run(OK ARGS collide sphere.xyz torus.ply --cases cases.csv --method ${method}
+           STDOUT_MATCH "^case,intersects,f_evaluations,query_us,points\n1,1,[0-9]+,[0-9.]+,1\n2,0,[0-9]+,[0-9.]+,0\n3,1,[0-9]+,[0-9.]+,1\n$"
+           MATCH "3 cases, ${method}")
+elseif(CASE STREQUAL "bad_transform")
+  pccd_run(FAIL ARGS collide sphere.xyz sphere.xyz --transform-b 2 0 0 0 0 1 0 0 0 0 1 0
+           MATCH "--transform-b: rigid transform: the rotation part scales")
+elseif(CASE STREQUAL "bad_transform_count")
+  pccd_run(FAIL ARGS collide sphere.xyz sphere.xyz --transform-a 1 0 0 0 0 1
+           MATCH "--transform-a expects 12 numbers")
+elseif(CASE STREQUAL "bad_cases_row")
+  file(WRITE ${WORK}/bad_row.csv "1,0,0,0,0,1,0,0,0,0,1,0,1,0,0,1,0,1,0,0,0,0,1,0\n\n1,0,0,0,0,1,0,0,0,0,1,0,1,0,0,1,0,1,0,0,0,0,1\n")
+  pccd_run(FAIL ARGS collide sphere.xyz sphere.xyz --cases bad_row.csv
+           MATCH "bad_row.csv:3: expected 24 numbers \\(T_A then T_B, 3x4 row-major each\\), got 23 fields"
+           NO_MATCH "case,intersects")
+elseif(CASE STREQUAL "bad_cases_field")
+  file(WRITE ${WORK}/bad_field.csv "header\n1,0,0,0,0,1,0,0,0,0,1,0,1,0,0,1,0,1,0,0,0,0,1,x0\n")
+  pccd_run(FAIL ARGS collide sphere.xyz sphere.xyz --cases bad_field.csv
+           MATCH "bad_field.csv:2: T_B: \"x0\" \\(number 12\\) is not a number")
+elseif(CASE STREQUAL "bad_cases_rigid")
+  file(WRITE ${WORK}/bad_rigid.csv "1,0,0,0,0,1,0,0,0,0,1,0,1,0,0,1,0,1,0,0,0,0,1,0\n1,0,0,0,0,1,0,0,0,0,-1,0,1,0,0,1,0,1,0,0,0,0,1,0\n")
+  pccd_run(FAIL ARGS collide sphere.xyz sphere.xyz --cases bad_rigid.csv
+           MATCH "bad_rigid.csv:2: T_A: rigid transform: the rotation part is a reflection")
+elseif(CASE STREQUAL "missing_file")
+  pccd_run(FAIL ARGS collide no_such_cloud.xyz sphere.xyz MATCH "no_such_cloud.xyz: .*missing file")
+  pccd_run(FAIL ARGS bench no_such_mesh.off MATCH "no_such_mesh.off: .*missing file")
+elseif(CASE STREQUAL "missing_cases_file")
+  pccd_run(FAIL ARGS collide sphere.xyz sphere.xyz --cases no_such_cases.csv
+           MATCH "no_such_cases.csv: cannot open the cases file: it does not exist")
+elseif(CASE STREQUAL "bench_mesh")
+  file(REMOVE ${WORK}/bench.csv)
+  pccd_run(OK ARGS bench torus_mesh.off --points 2000 --rotations 2 --distances 0:3:1.5 --csv bench.csv
+           MATCH "mesh, 1024 triangles, 2000 points sampled" "distance +poses +colliding +mean_us +median_us +mean_f_evals"
+                 "\n +0.000 +2 +[0-2] " "\n +1.500 +2 +[0-2] " "\n +3.000 +2 +0 ")
+  file(STRINGS ${WORK}/bench.csv rows)
+  list(LENGTH rows n)
+  list(GET rows 0 header)
+  if(NOT n EQUAL 7 OR NOT header MATCHES "^distance,rotation,intersects,status,query_us,f_evaluations,brackets_tried,")
+    message(FATAL_ERROR "bench.csv: expected a header and 6 rows, got ${n} lines starting with ${header}")
+  endif()
+elseif(CASE STREQUAL "bench_cloud_rst")
+  pccd_run(OK ARGS bench torus.ply --method rst --rotations 1 --distances 0,2.5
+           MATCH "point cloud, 2000 points" "method rst" "\n +2.500 +1 +0 ")
+elseif(CASE STREQUAL "bench_bad_distances")
+  pccd_run(FAIL ARGS bench torus.ply --distances 3:0:0.5 MATCH "--distances \"3:0:0.5\": expected step > 0 and stop >= start")
+elseif(CASE STREQUAL "collide_bunny")
+  if(DEFINED ENV{PCCD_DATA_DIR} AND NOT "$ENV{PCCD_DATA_DIR}" STREQUAL "")
+    set(DATA_DIR "$ENV{PCCD_DATA_DIR}")
+  endif()
+  if(DATA_DIR STREQUAL "" OR NOT EXISTS "${DATA_DIR}/bunny00.off")
+    message("PCCD_CLI_TEST_SKIPPED: bunny00.off not found (install libcgal-demo or set PCCD_DATA_DIR)")
+    return()
+  endif()
+  pccd_run(OK ARGS collide ${DATA_DIR}/bunny00.off ${DATA_DIR}/bunny00.off --normalize --transform-b 0 -1 0 0.5 1 0 0 0 0 0 1 0 --json
+           MATCH "\"intersects\": true" "\"same_object\": true" "\"points\": 1,")
+else()
+  message(FATAL_ERROR "unknown CASE '${CASE}'")
+endif()

@@ -1,0 +1,289 @@
+// pccd collide A B [--transform-a 12 numbers] [--transform-b 12 numbers] [--normalize]
+//   [--method isearch|rst] [--mode first|all] [--seed S] [--out points.ply] [--json] [--cases FILE]:
+// whether two point clouds, each posed by a rigid transform, intersect (do_intersect, --mode first)
+// or where (intersection_points, --mode all), with the query's counters and wall time
+// (ALGORITHMS.md sections 5 and 6). Each object is preprocessed once; with --cases every row of a
+// CSV file of pose pairs is answered with the same preprocessed objects.
+#include "commands.h"
+#include "intersection_support.h"
+
+#include <PCCD/IO/write_points.h>
+#include <PCCD/Rigid_transform_3.h>
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace pccd_tool {
+namespace {
+
+struct Collide_options {
+    std::string file_a;
+    std::string file_b;
+    std::vector<std::string> transform_a;
+    std::vector<std::string> transform_b;
+    bool normalize = false;
+    std::string method = "isearch";
+    std::string mode = "first";
+    std::uint64_t seed = PCCD::Intersection_options{}.seed;
+    std::string out;
+    bool json = false;
+    std::string cases;
+};
+
+/// The number spelled by the whole of `token`, if it is one.
+std::optional<double> parse_number(const std::string& token)
+{
+    if (token.empty()) return std::nullopt;
+    errno = 0;
+    char* end = nullptr;
+    const double value = std::strtod(token.c_str(), &end);
+    if (end != token.c_str() + token.size() || errno == ERANGE) return std::nullopt;
+    return value;
+}
+
+/// The fields of `text` separated by commas and/or white space.
+std::vector<std::string> split_fields(const std::string& text)
+{
+    std::string spaced = text;
+    for (char& c : spaced)
+        if (c == ',' || c == ';' || c == '\t' || c == '\r') c = ' ';
+    std::istringstream in(spaced);
+    std::vector<std::string> fields;
+    for (std::string field; in >> field;) fields.push_back(field);
+    return fields;
+}
+
+/// The rigid transform given by 12 numbers (3x4 row-major, rotation | translation); `what` names
+/// the source in error messages. Rigid_transform_3 rejects non-rigid matrices.
+PCCD::Rigid_transform_3<double> make_transform(const std::vector<std::string>& fields, std::size_t first,
+                                               const std::string& what)
+{
+    std::array<double, 12> m{};
+    for (std::size_t i = 0; i < 12; ++i) {
+        const std::optional<double> value = parse_number(fields[first + i]);
+        if (!value)
+            throw PCCD::Invalid_input(what + ": \"" + fields[first + i] + "\" (number " + std::to_string(i + 1) +
+                                      ") is not a number");
+        m[i] = *value;
+    }
+    try {
+        return PCCD::Rigid_transform_3<double>(m);
+    } catch (const PCCD::Invalid_input& e) {
+        throw PCCD::Invalid_input(what + ": " + e.what());
+    }
+}
+
+/// The transform of --transform-a / --transform-b: identity when absent, else 12 numbers given as
+/// separate arguments or in one quoted string.
+PCCD::Rigid_transform_3<double> option_transform(const std::vector<std::string>& arguments, const std::string& option)
+{
+    if (arguments.empty()) return {};
+    std::string joined;
+    for (const std::string& a : arguments) joined += a + ' ';
+    const std::vector<std::string> fields = split_fields(joined);
+    if (fields.size() != 12)
+        throw PCCD::Invalid_input(option + " expects 12 numbers (3x4 row-major: r00 r01 r02 t0 r10 ... t2), got " +
+                                  std::to_string(fields.size()));
+    return make_transform(fields, 0, option);
+}
+
+/// One pose pair of a --cases file and the line it came from.
+struct Pose_case {
+    std::size_t line;
+    PCCD::Rigid_transform_3<double> pose_a;
+    PCCD::Rigid_transform_3<double> pose_b;
+};
+
+/// The rows of a --cases CSV: 24 numbers each (T_A then T_B, 3x4 row-major); blank lines and lines
+/// starting with '#' are skipped; the first other line may be a header (its first field is not a
+/// number). Every other problem throws, naming the file and the line.
+std::vector<Pose_case> read_cases(const std::string& path)
+{
+    std::ifstream in(path);
+    if (!in)
+        throw PCCD::File_error(path, std::filesystem::exists(path) ? "cannot open the cases file"
+                                                                   : "cannot open the cases file: it does not exist (missing file)");
+    std::vector<Pose_case> cases;
+    bool first_row = true;
+    std::string text;
+    for (std::size_t line = 1; std::getline(in, text); ++line) {
+        const std::vector<std::string> fields = split_fields(text);
+        if (fields.empty() || fields.front().front() == '#') continue;
+        const bool header = first_row && !parse_number(fields.front());
+        first_row = false;
+        if (header) continue;
+        const std::string where = path + ":" + std::to_string(line);
+        if (fields.size() != 24)
+            throw PCCD::Invalid_input(where + ": expected 24 numbers (T_A then T_B, 3x4 row-major each), got " +
+                                      std::to_string(fields.size()) + " fields");
+        PCCD::Rigid_transform_3<double> pose_a = make_transform(fields, 0, where + ": T_A");
+        PCCD::Rigid_transform_3<double> pose_b = make_transform(fields, 12, where + ": T_B");
+        cases.push_back({line, pose_a, pose_b});
+    }
+    if (cases.empty()) throw PCCD::Invalid_input(path + ": no cases (expected rows of 24 numbers)");
+    return cases;
+}
+
+bool same_file(const std::string& a, const std::string& b)
+{
+    std::error_code error;
+    return a == b || std::filesystem::equivalent(a, b, error);
+}
+
+nlohmann::ordered_json object_json(const std::string& file, const Prepared_object& prepared)
+{
+    return {{"file", file},
+            {"points", prepared.object.size()},
+            {"sampling_radius", prepared.object.sampling_radius()},
+            {"preprocess_ms", prepared.preprocess_ms}};
+}
+
+void print_summary(const nlohmann::ordered_json& r)
+{
+    const auto object_line = [](const char* name, const nlohmann::ordered_json& o) {
+        std::printf("%s: %s, %zu points, r(P) %.5g, preprocessed in %.1f ms\n", name,
+                    o["file"].get<std::string>().c_str(), o["points"].get<std::size_t>(),
+                    o["sampling_radius"].get<double>(), o["preprocess_ms"].get<double>());
+    };
+    object_line("A", r["a"]);
+    if (r["same_object"].get<bool>())
+        std::printf("B: the same object as A\n");
+    else
+        object_line("B", r["b"]);
+    std::printf("method %s, mode %s, seed %llu%s\n", r["method"].get<std::string>().c_str(),
+                r["mode"].get<std::string>().c_str(), static_cast<unsigned long long>(r["seed"].get<std::uint64_t>()),
+                r["normalize"].get<bool>() ? ", normalized into [-1,1]^3" : "");
+    if (r["intersects"].get<bool>())
+        std::printf("answer: intersecting, %zu point%s\n", r["points"].get<std::size_t>(),
+                    r["points"].get<std::size_t>() == 1 ? "" : "s");
+    else
+        std::printf("answer: no intersection (%s)\n", r["status"].get<std::string>().c_str());
+    std::printf("query: %.1f us, %zu f evaluations\n", r["query_us"].get<double>(), r["f_evaluations"].get<std::size_t>());
+    std::printf("counters:");
+    for (std::size_t i = 1; i < counter_names().size(); ++i)
+        std::printf(" %s %zu", counter_names()[i].c_str(), r[counter_names()[i]].get<std::size_t>());
+    std::printf("\n");
+    if (r.contains("first_point")) std::printf("first point: %s\n", r["first_point"].dump().c_str());
+}
+
+void run_collide(const Collide_options& o)
+{
+    const bool first_hit = o.mode == "first";
+    const PCCD::Intersection_options query_options{.seed = o.seed};
+    // Everything is read and checked before the (slow) preprocessing.
+    std::optional<std::vector<Pose_case>> cases;
+    PCCD::Rigid_transform_3<double> pose_a, pose_b;
+    if (!o.cases.empty())
+        cases = read_cases(o.cases);
+    else {
+        pose_a = option_transform(o.transform_a, "--transform-a");
+        pose_b = option_transform(o.transform_b, "--transform-b");
+    }
+    const bool same = same_file(o.file_a, o.file_b);
+    const Object_points points_a = read_object_points(o.file_a, o.normalize);
+    const std::optional<Object_points> points_b =
+        same ? std::nullopt : std::optional<Object_points>(read_object_points(o.file_b, o.normalize));
+    const Prepared_object a = prepare_object(points_a);
+    const Prepared_object b = same ? a : prepare_object(*points_b);
+    const double preprocess_ms = a.preprocess_ms + (same ? 0.0 : b.preprocess_ms);
+
+    if (cases) {
+        std::printf("case,intersects,f_evaluations,query_us,points\n");
+        for (std::size_t i = 0; i < cases->size(); ++i) {
+            const Pose_case& c = (*cases)[i];
+            const Timed_result t =
+                run_timed_query(a.object, c.pose_a, b.object, c.pose_b, query_options, o.method, first_hit);
+            std::printf("%zu,%d,%zu,%.1f,%zu\n", i + 1, t.result.intersects ? 1 : 0, t.result.counters.f_evaluations,
+                        t.query_us, t.result.points.size());
+        }
+        std::fflush(stdout);
+        std::fprintf(stderr, "pccd collide: %zu cases, %s, mode %s; preprocessing took %.1f ms\n", cases->size(),
+                     o.method.c_str(), o.mode.c_str(), preprocess_ms);
+        return;
+    }
+
+    const Timed_result t = run_timed_query(a.object, pose_a, b.object, pose_b, query_options, o.method, first_hit);
+    nlohmann::ordered_json r;
+    r["a"] = object_json(o.file_a, a);
+    r["b"] = object_json(o.file_b, b);
+    r["same_object"] = same;
+    r["normalize"] = o.normalize;
+    r["method"] = o.method;
+    r["mode"] = o.mode;
+    r["seed"] = o.seed;
+    r["intersects"] = t.result.intersects;
+    r["status"] = PCCD::to_string(t.result.status);
+    r["points"] = t.result.points.size();
+    add_counters(r, t.result.counters);
+    if (o.method == PCCD::Randomized_sampling::name()) r["closest_estimate"] = t.result.closest_estimate; // inf: null
+    r["query_us"] = t.query_us;
+    r["preprocess_ms"] = preprocess_ms;
+    if (!t.result.points.empty()) {
+        const Eigen::Vector3d& p = t.result.points.front().position;
+        r["first_point"] = {p.x(), p.y(), p.z()};
+    }
+    r["out"] = nullptr;
+    if (!o.out.empty()) {
+        if (t.result.points.empty()) {
+            std::fprintf(stderr, "pccd collide: no intersection points; %s not written\n", o.out.c_str());
+        } else {
+            PCCD::Point_data data;
+            for (const PCCD::Intersection_point& p : t.result.points) data.points.push_back(p.position);
+            PCCD::IO::write_points(o.out, data);
+            r["out"] = o.out;
+        }
+    }
+    if (o.json)
+        std::cout << r.dump(2) << '\n';
+    else {
+        print_summary(r);
+        if (!r["out"].is_null()) std::printf("wrote %zu points to %s\n", t.result.points.size(), o.out.c_str());
+    }
+}
+
+} // namespace
+
+void register_collide(CLI::App& app)
+{
+    auto* cmd = app.add_subcommand(
+        "collide", "Whether (and where) two point clouds intersect, each posed by a rigid transform");
+    auto o = std::make_shared<Collide_options>();
+    cmd->add_option("A", o->file_a, "First point file (.ply, .off, .xyz, .pwn; a mesh gives its vertices)")->required();
+    cmd->add_option("B", o->file_b, "Second point file (may be the same as A: preprocessed once)")->required();
+    auto* ta = cmd->add_option("--transform-a", o->transform_a,
+                               "Pose of A: 12 numbers, the 3x4 matrix [R | t] row by row (default: identity)")
+                   ->expected(1, 12);
+    auto* tb = cmd->add_option("--transform-b", o->transform_b, "Pose of B, as --transform-a")->expected(1, 12);
+    cmd->add_flag("--normalize", o->normalize,
+                  "Centre and scale each object into [-1,1]^3 (bounding box) before preprocessing");
+    cmd->add_option("--method", o->method, "Leaf intersector: isearch (interpolation search, default) or rst")
+        ->check(CLI::IsMember(method_names()));
+    cmd->add_option("--mode", o->mode, "first: stop at the first intersection (do_intersect, default); "
+                                       "all: points on the intersection curves (intersection_points)")
+        ->check(CLI::IsMember({"first", "all"}));
+    cmd->add_option("--seed", o->seed, "Seed of the query (default 24301 = 0x5eed)");
+    auto* out = cmd->add_option("--out", o->out, "Write the intersection points to this file (.ply, .off, .xyz)");
+    auto* json = cmd->add_flag("--json", o->json, "Print one JSON object instead of text");
+    cmd->add_option("--cases", o->cases,
+                    "CSV of pose pairs, 24 numbers a row (T_A then T_B, 3x4 row-major); prints "
+                    "case,intersects,f_evaluations,query_us,points")
+        ->excludes(ta)
+        ->excludes(tb)
+        ->excludes(out)
+        ->excludes(json);
+    cmd->callback([o] { run_collide(*o); });
+}
+
+} // namespace pccd_tool

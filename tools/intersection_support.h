@@ -1,0 +1,135 @@
+// tools/intersection_support.h -- what `pccd collide` and `pccd bench` share: reading an object
+// from a file (optionally normalized into [-1, 1]^3, ALGORITHMS.md section 8) and preprocessing
+// it, choosing the leaf intersector by name (sections 5 and 6), running one timed query, and the
+// query's counters as JSON and CSV.
+#pragma once
+
+#include <PCCD/Error.h>
+#include <PCCD/IO/read_points.h>
+#include <PCCD/Intersection/do_intersect.h>
+#include <PCCD/Point_cloud_object.h>
+#include <PCCD/Sampling/normalize.h>
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace pccd_tool {
+
+using Clock = std::chrono::steady_clock;
+
+inline double ms_since(Clock::time_point start)
+{
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+/// The methods of the --method option: the two leaf intersector policies, by their name().
+inline const std::vector<std::string>& method_names()
+{
+    static const std::vector<std::string> names{PCCD::Interpolation_search::name(), PCCD::Randomized_sampling::name()};
+    return names;
+}
+
+/// Points (and normals, when given) ready for preprocessing.
+struct Object_points {
+    std::vector<Eigen::Vector3d> points;
+    std::vector<Eigen::Vector3d> normals;
+};
+
+/// Centres and scales `points` into [-1, 1]^3 in place (normals keep their direction: the
+/// similarity has no rotation and a positive scale).
+inline void normalize_points(std::vector<Eigen::Vector3d>& points)
+{
+    const PCCD::Similarity_3 similarity = PCCD::compute_unit_cube_normalization(points);
+    for (Eigen::Vector3d& p : points) p = similarity.transform_point(p);
+}
+
+/// The points of a PLY, OFF or XYZ file (an OFF or PLY mesh gives its vertices), normalized into
+/// [-1, 1]^3 when asked.
+inline Object_points read_object_points(const std::string& path, bool normalize)
+{
+    PCCD::Point_data data = PCCD::IO::read_points(path);
+    if (normalize) normalize_points(data.points);
+    return {std::move(data.points), std::move(data.normals)};
+}
+
+/// A preprocessed object and the wall time its preprocessing took.
+struct Prepared_object {
+    PCCD::Point_cloud_object<> object;
+    double preprocess_ms;
+};
+
+/// Readable property map from an index to a row of a table (points or normals).
+struct Table_map {
+    const std::vector<Eigen::Vector3d>* table;
+    friend const Eigen::Vector3d& get(const Table_map& m, std::size_t i) { return (*m.table)[i]; }
+};
+
+/// Preprocesses the points with Point_cloud_object's defaults; normals, when present, orient the
+/// object's normals (as `pccd eval` does).
+inline Prepared_object prepare_object(const Object_points& input)
+{
+    const Clock::time_point start = Clock::now();
+    if (input.normals.empty()) {
+        PCCD::Point_cloud_object<> object(input.points);
+        return {std::move(object), ms_since(start)};
+    }
+    std::vector<std::size_t> items(input.points.size());
+    for (std::size_t i = 0; i < items.size(); ++i) items[i] = i;
+    PCCD::Point_cloud_object<> object(items, Table_map{&input.points}, Table_map{&input.normals});
+    return {std::move(object), ms_since(start)};
+}
+
+/// The answer of one query and its wall time (steady_clock, microseconds).
+struct Timed_result {
+    PCCD::Intersection_result result;
+    double query_us;
+};
+
+/// One query: do_intersect (first_hit) or intersection_points, with the policy named `method`.
+inline Timed_result run_timed_query(const PCCD::Point_cloud_object<>& a, const PCCD::Rigid_transform_3<double>& pose_a,
+                                    const PCCD::Point_cloud_object<>& b, const PCCD::Rigid_transform_3<double>& pose_b,
+                                    const PCCD::Intersection_options& options, const std::string& method, bool first_hit)
+{
+    const auto query = [&](const auto& policy) {
+        const Clock::time_point start = Clock::now();
+        PCCD::Intersection_result result = first_hit ? PCCD::do_intersect(a, pose_a, b, pose_b, options, policy)
+                                                     : PCCD::intersection_points(a, pose_a, b, pose_b, options, policy);
+        const double us = std::chrono::duration<double, std::micro>(Clock::now() - start).count();
+        return Timed_result{std::move(result), us};
+    };
+    if (method == PCCD::Randomized_sampling::name()) return query(PCCD::Randomized_sampling{});
+    if (method == PCCD::Interpolation_search::name()) return query(PCCD::Interpolation_search{});
+    throw PCCD::Invalid_input("unknown method \"" + method + "\" (expected isearch or rst)");
+}
+
+/// The names of the counters, in the order of counter_values().
+inline const std::vector<std::string>& counter_names()
+{
+    static const std::vector<std::string> names{
+        "f_evaluations",    "brackets_tried", "partner_candidates", "brackets_found",
+        "search_steps",     "bisection_steps", "samples",           "candidate_points",
+        "refinement_samples", "node_pairs",   "leaf_pairs"};
+    return names;
+}
+
+inline std::vector<std::size_t> counter_values(const PCCD::Intersection_counters& c)
+{
+    return {c.f_evaluations, c.brackets_tried,   c.partner_candidates, c.brackets_found,
+            c.search_steps,  c.bisection_steps,  c.samples,            c.candidate_points,
+            c.refinement_samples, c.node_pairs, c.leaf_pairs};
+}
+
+/// Adds every counter to `out` under its name.
+template <class Json>
+void add_counters(Json& out, const PCCD::Intersection_counters& counters)
+{
+    const std::vector<std::size_t> values = counter_values(counters);
+    for (std::size_t i = 0; i < values.size(); ++i) out[counter_names()[i]] = values[i];
+}
+
+} // namespace pccd_tool
