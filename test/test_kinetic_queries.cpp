@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -256,4 +257,38 @@ TEST_CASE("memoized queries give exactly the answers of the uncached traversal",
     }
     CHECK(pairs > 100);
     CHECK(hits > 10);
+}
+
+TEST_CASE("concurrent queries on one tree give the answers of sequential ones", "[kinetic][query]")
+{
+    // Queries take memo tables from the tree's pool and give them back; two threads querying the
+    // same trees at once get separate tables, and later queries reuse them.
+    const auto scene = PCCD::make_cloth_scene({.triangles = 400, .duration = 1.5});
+    using Tree = PCCD::Kinetic_AABB_tree<PCCD::Piecewise_linear_flightplan>;
+    Tree cloth(scene.flightplans, scene.primitives);
+    Tree table(scene.obstacle_flightplans, scene.obstacle_triangles);
+    for (const double t : {0.4, 0.9, 1.4}) {
+        cloth.advance_to(t);
+        table.advance_to(t);
+        Pairs self, overlap;
+        cloth.self_overlapping_pairs(self);
+        cloth.overlapping_pairs(table, overlap, 0.01);
+        std::vector<Pairs> results(4);
+        {
+            std::thread first([&] {
+                for (int k = 0; k < 5; ++k) cloth.self_overlapping_pairs(results[0]);
+                cloth.overlapping_pairs(table, results[2], 0.01);
+            });
+            std::thread second([&] {
+                for (int k = 0; k < 5; ++k) cloth.self_overlapping_pairs(results[1]);
+                cloth.overlapping_pairs(table, results[3], 0.01);
+            });
+            first.join();
+            second.join();
+        }
+        CHECK(results[0] == self);
+        CHECK(results[1] == self);
+        CHECK(results[2] == overlap);
+        CHECK(results[3] == overlap);
+    }
 }

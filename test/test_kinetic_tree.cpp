@@ -8,6 +8,7 @@
 #include <PCCD/Kinetic/Kinetic_AABB_tree.h>
 #include <PCCD/Kinetic/Linear_flightplan.h>
 #include <PCCD/Kinetic/Polynomial_flightplan.h>
+#include <PCCD/Kinetic/Refit_AABB_tree.h>
 #include <PCCD/Kinetic/Scenes/Cloth_scene.h>
 #include <PCCD/Kinetic/Scenes/Deforming_cloud_scene.h>
 #include <PCCD/Kinetic/Scenes/Random_motion_scene.h>
@@ -66,15 +67,21 @@ std::size_t check_against_brute_force(const Tree& tree)
             const double value = tree.flightplan(v).coordinate(b % 3, t);
             const double expected = b < 3 ? box.min()[b % 3] : box.max()[b % 3];
             if (value != expected) ++mismatches;
-            // The extreme is one of the node's candidates.
-            if (tree.is_leaf(n)) {
-                const auto& p = tree.primitive(tree.leaf_primitive(n));
+            // The extreme is one of the node's candidates: a vertex of a leaf's primitive; for an
+            // inner node, the extreme of an inner child or any vertex of a leaf child (leaves
+            // store no extremes, ties among a primitive's vertices are resolved at the parent).
+            const auto leaf_has = [&](Node leaf) {
+                const auto& p = tree.primitive(tree.leaf_primitive(leaf));
                 bool found = false;
                 for (std::size_t k = 0; k < std::remove_cvref_t<decltype(p)>::vertex_count; ++k)
                     found = found || p.vertex(k) == v;
-                CHECK(found);
+                return found;
+            };
+            if (tree.is_leaf(n)) {
+                CHECK(leaf_has(n));
             } else {
-                CHECK((v == tree.extreme_vertex(tree.left(n), b) || v == tree.extreme_vertex(tree.right(n), b)));
+                const auto child_has = [&](Node c) { return tree.is_leaf(c) ? leaf_has(c) : v == tree.extreme_vertex(c, b); };
+                CHECK((child_has(tree.left(n)) || child_has(tree.right(n))));
             }
         }
         if (mismatches != 0) {
@@ -367,6 +374,54 @@ TEST_CASE("insertions and removals at run time", "[kinetic][tree]")
     check_against_brute_force(tree);
     CHECK_THROWS_AS(tree.remove(12345), PCCD::Invalid_input);
     CHECK_THROWS_AS(tree.insert({99999}), PCCD::Invalid_input);
+}
+
+TEST_CASE("triangle insertions and removals: kinetic and refit trees agree", "[kinetic][tree]")
+{
+    // Leaves hold no certificates, so a leaf child's vertices are candidates of its parent: inserting
+    // and removing triangles moves leaves between parents. Both trees share the slot bookkeeping, so
+    // they hand out the same indices; their overlap queries with the table agree.
+    const auto scene = PCCD::make_cloth_scene({.triangles = 200, .duration = 1.0});
+    using F = PCCD::Piecewise_linear_flightplan;
+    PCCD::Kinetic_AABB_tree<F> tree(scene.flightplans, scene.primitives);
+    PCCD::Refit_AABB_tree<F> refit(scene.flightplans, scene.primitives);
+    PCCD::Kinetic_AABB_tree<F> table(scene.obstacle_flightplans, scene.obstacle_triangles);
+    std::vector<std::uint32_t> live(scene.primitives.size());
+    for (std::uint32_t i = 0; i < live.size(); ++i) live[i] = i;
+    PCCD::Random_engine rng(31);
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> a, b;
+    for (const double t : random_times(rng, 0.0, 1.1, 300)) {
+        const auto before = tree.statistics();
+        tree.advance_to(t);
+        // Each node counts at most once per advance_to, and only when one of its bounds changed.
+        CHECK(tree.statistics().node_updates - before.node_updates <= tree.node_count());
+        CHECK(tree.statistics().node_updates - before.node_updates <=
+              tree.statistics().bv_updates - before.bv_updates);
+        refit.advance_to(t);
+        table.advance_to(t);
+        if (PCCD::uniform_index(rng, 2) == 0 && live.size() > 1) {
+            const auto k = PCCD::uniform_index(rng, live.size());
+            tree.remove(live[k]);
+            refit.remove(live[k]);
+            live.erase(live.begin() + std::ptrdiff_t(k));
+        } else {
+            const PCCD::Kinetic_triangle triangle =
+                scene.primitives[PCCD::uniform_index(rng, scene.primitives.size())];
+            const auto i = tree.insert(triangle);
+            CHECK(refit.insert(triangle) == i);
+            live.push_back(i);
+        }
+        REQUIRE(tree.primitive_count() == live.size());
+        REQUIRE(refit.primitive_count() == live.size());
+        check_against_brute_force(tree);
+        tree.overlapping_pairs(table, a, 0.01);
+        refit.overlapping_pairs(table, b, 0.01);
+        std::sort(a.begin(), a.end());
+        std::sort(b.begin(), b.end());
+        CHECK(a == b);
+    }
+    CHECK(tree.statistics().insertions > 100);
+    CHECK(tree.statistics().removals > 100);
 }
 
 TEST_CASE("exact ties and simultaneous events are deterministic", "[kinetic][tree]")

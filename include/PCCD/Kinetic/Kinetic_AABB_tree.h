@@ -3,10 +3,12 @@
 // structure, the vertex attaining each of the six bounds of every node, and keeps it valid by
 // processing certificate failures (events) in time order instead of refitting every frame.
 //
-// One certificate per node and bound says "this vertex is the extreme of its candidates" (the
-// children's extremes for an inner node, the primitive's vertices for a leaf). Its failure time,
-// the first time a candidate's flightplan overtakes the extreme's, goes into an indexed event
-// queue. advance_to(t) pops the events before t in order, swaps the extreme, reschedules that
+// One certificate per inner node and bound says "this vertex is the extreme of its candidates" (the
+// extreme of an inner child, every vertex of a leaf child's primitive). Leaves store nothing: a
+// leaf's box is the box of its primitive's few vertices, read off directly, so crossings between
+// the vertices of one primitive are no events unless they change the parent's extreme. A
+// certificate's failure time, the first time a candidate's flightplan overtakes the extreme's, goes
+// into an indexed event queue. advance_to(t) pops the events before t in order, swaps the extreme, reschedules that
 // certificate and propagates up while the parent's extreme changes. Flightplans can be replaced,
 // primitives inserted and removed at run time; each repairs only the affected paths.
 #pragma once
@@ -30,6 +32,8 @@
 #include <PCCD/Kinetic/Kinetic_primitives.h>
 #include <PCCD/Kinetic/internal/AABB_tree_build.h>
 #include <PCCD/Kinetic/internal/AABB_tree_queries.h>
+#include <PCCD/Kinetic/internal/Primitive_slots.h>
+#include <PCCD/Kinetic/internal/Query_memo_pool.h>
 #include <PCCD/concepts/Flightplan.h>
 #include <PCCD/concepts/KineticPrimitive.h>
 
@@ -39,6 +43,10 @@ namespace PCCD {
 struct Kinetic_statistics {
     std::uint64_t events = 0;                   ///< certificate failures popped from the queue
     std::uint64_t bv_updates = 0;               ///< changes of one bound's extreme vertex at one node
+    /// Distinct nodes whose extremes changed, counted once per node and call of advance_to (or
+    /// other change at run time) however many of its bounds changed how often: the kinetic
+    /// counterpart of a refit's "node boxes recomputed per frame", so it depends on the query rate.
+    std::uint64_t node_updates = 0;
     std::uint64_t certificate_computations = 0; ///< next_crossing evaluations (the real work)
     std::uint64_t flightplan_changes = 0;
     std::uint64_t insertions = 0;
@@ -55,13 +63,16 @@ struct Kinetic_statistics {
 /// The tree has a current time now(); node boxes and queries refer to it. Ties between vertices are
 /// allowed: an extreme is any vertex attaining the bound. Simultaneous events are processed in
 /// order of (node, bound), so the structure after advance_to(t) is a deterministic function of the
-/// inputs.
+/// inputs. Only inner nodes store extremes and hold certificates; a leaf's box is the box of its
+/// primitive's vertices (a primitive has at most a few), so the order of one primitive's vertices
+/// is never maintained.
 ///
-/// Queries memoize vertex positions and node boxes at now() in tables owned by the query call (each
-/// vertex's flightplan is evaluated at most once per query, however many node boxes it bounds, and
-/// each node box is assembled at most once, however many node pairs it enters), so they give the
-/// same answers as box() and vertex_position() without any mutable state in the tree (provided the
-/// flightplan's position(t)[axis] equals coordinate(axis, t), as in all models shipped, bit for bit).
+/// Queries memoize vertex positions and node boxes at now() (each vertex's flightplan is evaluated
+/// at most once per query, however many node boxes it bounds, and each node box is assembled at
+/// most once, however many node pairs it enters), so they give the same answers as box() and
+/// vertex_position() (provided the flightplan's position(t)[axis] equals coordinate(axis, t), as in
+/// all models shipped, bit for bit). The memo tables are reused by later queries: the tree keeps
+/// one set per query that ran at the same time as others (the size of the tree each).
 ///
 /// Thread safety: const members (access and queries) may run concurrently; advance_to,
 /// set_flightplan, insert and remove need exclusive access.
@@ -90,22 +101,19 @@ public:
     ///         (the message names both), or there are 2^31 primitives or more.
     /// Complexity: O(n log n) plus one next_crossing per candidate of every node and bound.
     Kinetic_AABB_tree(std::vector<F> flightplans, std::vector<P> primitives, double t0 = 0.0)
-        : m_flightplans(std::move(flightplans)), m_primitives(std::move(primitives)), m_now(t0)
+        : m_flightplans(std::move(flightplans)), m_primitives(std::move(primitives), "Kinetic_AABB_tree"), m_now(t0)
     {
         if (!std::isfinite(t0)) throw Invalid_input(internal::concat("Kinetic_AABB_tree: start time ", t0, " is not finite"));
-        if (m_primitives.size() >= (std::size_t(1) << 31))
-            throw Invalid_input("Kinetic_AABB_tree: too many primitives (2^31 or more)");
         if (m_flightplans.size() >= std::size_t(no_node))
             throw Invalid_input("Kinetic_AABB_tree: too many vertices (2^32 - 1 or more)");
         m_incident.resize(m_flightplans.size());
-        for (Index i = 0; i < Index(m_primitives.size()); ++i) {
+        for (Index i = 0; i < Index(m_primitives.capacity()); ++i) {
             check_primitive(m_primitives[i], i);
             add_incidence(i);
         }
-        m_alive.assign(m_primitives.size(), 1);
-        m_leaf_of.assign(m_primitives.size(), no_node);
-        std::vector<Index> ids(m_primitives.size());
-        std::vector<Eigen::Vector3d> centroids(m_primitives.size());
+        m_leaf_of.assign(m_primitives.capacity(), no_node);
+        std::vector<Index> ids(m_primitives.capacity());
+        std::vector<Eigen::Vector3d> centroids(m_primitives.capacity());
         for (Index i = 0; i < Index(ids.size()); ++i) {
             ids[i] = i;
             centroids[i] = centroid(m_primitives[i], t0);
@@ -115,6 +123,8 @@ public:
         for (Node_index n = 0; n < Node_index(m_nodes.size()); ++n)
             if (m_nodes[n].is_leaf()) m_leaf_of[m_nodes[n].primitive] = n;
         m_queue.resize(m_nodes.size() * bound_count);
+        m_overtaker.assign(m_nodes.size() * bound_count, no_node);
+        m_updated_in_round.assign(m_nodes.size(), 0);
         initialize_at(t0);
     }
     /// @}
@@ -139,14 +149,15 @@ public:
             initialize_at(t);
             return;
         }
+        next_update_round();
         while (!m_queue.empty() && m_queue.top_time() < t) {
             m_now = m_queue.top_time();
             const typename Queue::Id id = m_queue.top_id();
             ++m_stats.events;
             const Node_index n = id / bound_count;
             const int b = int(id % bound_count);
-            if (update_bound(n, b)) {
-                ++m_stats.bv_updates;
+            if (update_bound(n, b, m_overtaker[id])) {
+                count_update(n);
                 propagate(n, b);
             }
         }
@@ -175,15 +186,15 @@ public:
                                                  m_flightplans.size(), " vertices)"));
         m_flightplans[v] = std::move(flightplan);
         ++m_stats.flightplan_changes;
+        next_update_round();
         for (const Index i : m_incident[v]) {
             std::array<bool, bound_count> changed{};
-            for (Node_index n = m_leaf_of[i]; n != no_node; n = m_nodes[n].parent) {
+            for (Node_index n = m_nodes[m_leaf_of[i]].parent; n != no_node; n = m_nodes[n].parent) {
                 bool go_on = false;
                 for (int b = 0; b < bound_count; ++b) {
-                    const bool involved = m_nodes[n].is_leaf() || m_extreme[m_nodes[n].left][std::size_t(b)] == v ||
-                                          m_extreme[m_nodes[n].right][std::size_t(b)] == v;
+                    const bool involved = is_candidate(v, m_nodes[n].left, b) || is_candidate(v, m_nodes[n].right, b);
                     changed[std::size_t(b)] = (involved || changed[std::size_t(b)]) && update_bound(n, b);
-                    if (changed[std::size_t(b)]) ++m_stats.bv_updates;
+                    if (changed[std::size_t(b)]) count_update(n);
                     go_on = go_on || changed[std::size_t(b)] || m_extreme[n][std::size_t(b)] == v;
                 }
                 if (!go_on) break;
@@ -209,27 +220,15 @@ public:
     /// can unbalance the tree; rebuild it when the height matters.
     Index insert(const P& primitive)
     {
-        check_primitive(primitive, Index(m_primitives.size()));
-        Index i;
-        if (!m_free_primitives.empty()) {
-            i = m_free_primitives.back();
-            m_free_primitives.pop_back();
-            m_primitives[i] = primitive;
-            m_alive[i] = 1;
-        } else {
-            if (m_primitives.size() + 1 >= (std::size_t(1) << 31))
-                throw Invalid_input("Kinetic_AABB_tree::insert: too many primitives");
-            i = Index(m_primitives.size());
-            m_primitives.push_back(primitive);
-            m_alive.push_back(1);
-            m_leaf_of.push_back(no_node);
-        }
+        check_primitive(primitive, Index(m_primitives.capacity()));
+        const Index i = m_primitives.insert(primitive, "Kinetic_AABB_tree");
+        if (i >= m_leaf_of.size()) m_leaf_of.resize(m_primitives.capacity(), no_node);
         add_incidence(i);
         ++m_stats.insertions;
+        next_update_round();
         const Node_index leaf = allocate_node();
         m_nodes[leaf].primitive = i;
         m_leaf_of[i] = leaf;
-        for (int b = 0; b < bound_count; ++b) update_bound(leaf, b);
         if (m_root == no_node) {
             m_root = leaf;
             return i;
@@ -260,9 +259,9 @@ public:
         if (!contains(i))
             throw Invalid_input(internal::concat("Kinetic_AABB_tree::remove: primitive ", i, " is not in the tree"));
         ++m_stats.removals;
+        next_update_round();
         remove_incidence(i);
-        m_alive[i] = 0;
-        m_free_primitives.push_back(i);
+        m_primitives.remove(i);
         const Node_index leaf = m_leaf_of[i];
         m_leaf_of[i] = no_node;
         const Node_index inner = m_nodes[leaf].parent;
@@ -284,10 +283,10 @@ public:
     /// @{
     std::size_t vertex_count() const { return m_flightplans.size(); }
     /// Number of live primitives.
-    std::size_t primitive_count() const { return m_primitives.size() - m_free_primitives.size(); }
+    std::size_t primitive_count() const { return m_primitives.live_count(); }
     /// One past the largest primitive index ever used (live or freed).
-    std::size_t primitive_capacity() const { return m_primitives.size(); }
-    bool contains(Index i) const { return i < m_primitives.size() && m_alive[i]; }
+    std::size_t primitive_capacity() const { return m_primitives.capacity(); }
+    bool contains(Index i) const { return m_primitives.contains(i); }
     const P& primitive(Index i) const { return m_primitives[i]; }
     const F& flightplan(Index v) const { return m_flightplans[v]; }
     /// Position of vertex v at now().
@@ -307,15 +306,39 @@ public:
     Index leaf_primitive(Node_index n) const { return m_nodes[n].primitive; }
     /// The leaf holding live primitive i.
     Node_index leaf_of(Index i) const { return m_leaf_of[i]; }
-    /// The vertex attaining bound b (0..5) of node n.
-    Index extreme_vertex(Node_index n, int b) const { return m_extreme[n][std::size_t(b)]; }
-    /// The scheduled failure time of the certificate of node n and bound b (+infinity: never).
+    /// The vertex attaining bound b (0..5) of node n: the stored extreme of an inner node; for a
+    /// leaf, the first vertex of its primitive attaining the bound at now() (leaves store nothing).
+    Index extreme_vertex(Node_index n, int b) const
+    {
+        if (!m_nodes[n].is_leaf()) return m_extreme[n][std::size_t(b)];
+        const P& p = m_primitives[m_nodes[n].primitive];
+        const int axis = b % 3;
+        Index best = p.vertex(0);
+        double best_value = m_flightplans[best].coordinate(axis, m_now);
+        for (std::size_t k = 1; k < P::vertex_count; ++k) {
+            const double value = m_flightplans[p.vertex(k)].coordinate(axis, m_now);
+            if (b < 3 ? value < best_value : value > best_value) {
+                best = p.vertex(k);
+                best_value = value;
+            }
+        }
+        return best;
+    }
+    /// The scheduled failure time of the certificate of node n and bound b (+infinity: never, and
+    /// for every leaf).
     double certificate_time(Node_index n, int b) const { return m_queue.time(certificate_id(n, b)); }
-    /// The box of node n at now(), read off its six extreme vertices. O(1) flightplan evaluations.
+    /// The box of node n at now(): an inner node's is read off its six extreme vertices, a leaf's is
+    /// the box of its primitive's vertices. O(1) flightplan evaluations.
     Box box(Node_index n) const
     {
-        const std::array<Index, bound_count>& e = m_extreme[n];
         Box result;
+        if (m_nodes[n].is_leaf()) {
+            const P& p = m_primitives[m_nodes[n].primitive];
+            result.setEmpty();
+            for (std::size_t k = 0; k < P::vertex_count; ++k) result.extend(m_flightplans[p.vertex(k)].position(m_now));
+            return result;
+        }
+        const std::array<Index, bound_count>& e = m_extreme[n];
         for (int axis = 0; axis < 3; ++axis) {
             result.min()[axis] = m_flightplans[e[std::size_t(axis)]].coordinate(axis, m_now);
             result.max()[axis] = m_flightplans[e[std::size_t(axis + 3)]].coordinate(axis, m_now);
@@ -374,18 +397,21 @@ private:
     friend class Kinetic_AABB_tree;
 
     /// The tree as one query reads it: the same nodes and primitives, with vertex positions and
-    /// node boxes at now() computed on first use and memoized for the rest of the query. Lives on
-    /// the querying thread's stack, so concurrent queries share nothing mutable. Construction
-    /// zeroes one flag byte per vertex and per node (positions and boxes are written before they
-    /// are read).
+    /// node boxes at now() computed on first use and memoized for the rest of the query. The memo
+    /// tables come from the tree's pool and go back to it when the query ends (one set per query
+    /// running at the same time), so concurrent queries share nothing mutable and a query neither
+    /// allocates nor clears tables of the size of the tree (stamps invalidate them).
     class Query_view {
     public:
-        explicit Query_view(const Kinetic_AABB_tree& tree)
-            : m_tree(tree), m_evaluated(tree.m_flightplans.size(), 0),
-              m_positions(std::make_unique_for_overwrite<Eigen::Vector3d[]>(tree.m_flightplans.size())),
-              m_boxed(tree.m_nodes.size(), 0), m_boxes(std::make_unique_for_overwrite<Box[]>(tree.m_nodes.size()))
+        explicit Query_view(const Kinetic_AABB_tree& tree) : m_tree(tree), m_memo(tree.m_memo_pool.acquire())
         {
+            m_memo->start(tree.m_flightplans.size(), tree.m_nodes.size());
+            m_stamp = m_memo->stamp;
         }
+        Query_view(const Query_view&) = delete;
+        Query_view& operator=(const Query_view&) = delete;
+        ~Query_view() { m_tree.m_memo_pool.release(std::move(m_memo)); }
+
         Node_index root() const { return m_tree.m_root; }
         bool is_leaf(Node_index n) const { return m_tree.m_nodes[n].is_leaf(); }
         Node_index left(Node_index n) const { return m_tree.m_nodes[n].left; }
@@ -394,33 +420,44 @@ private:
         const P& primitive(Index i) const { return m_tree.m_primitives[i]; }
         const Eigen::Vector3d& vertex_position(Index v) const
         {
-            if (!m_evaluated[v]) {
-                m_positions[v] = m_tree.m_flightplans[v].position(m_tree.m_now);
-                m_evaluated[v] = 1;
+            internal::Query_memo::Position& entry = m_memo->positions[v];
+            if (entry.stamp != m_stamp) {
+                entry.value = m_tree.m_flightplans[v].position(m_tree.m_now);
+                entry.stamp = m_stamp;
             }
-            return m_positions[v];
+            return entry.value;
         }
         /// Equal to the tree's box(n).
         const Box& box(Node_index n) const
         {
-            Box& result = m_boxes[n];
-            if (!m_boxed[n]) {
-                const std::array<Index, bound_count>& e = m_tree.m_extreme[n];
-                for (int axis = 0; axis < 3; ++axis) {
-                    result.min()[axis] = vertex_position(e[std::size_t(axis)])[axis];
-                    result.max()[axis] = vertex_position(e[std::size_t(axis + 3)])[axis];
-                }
-                m_boxed[n] = 1;
+            internal::Query_memo::Box& entry = m_memo->boxes[n];
+            if (entry.stamp != m_stamp) {
+                assemble(n, entry.value);
+                entry.stamp = m_stamp;
             }
-            return result;
+            return entry.value;
         }
 
     private:
+        void assemble(Node_index n, Box& result) const
+        {
+            const internal::AABB_node& node = m_tree.m_nodes[n];
+            if (node.is_leaf()) {
+                const P& p = m_tree.m_primitives[node.primitive];
+                result.setEmpty();
+                for (std::size_t k = 0; k < P::vertex_count; ++k) result.extend(vertex_position(p.vertex(k)));
+                return;
+            }
+            const std::array<Index, bound_count>& e = m_tree.m_extreme[n];
+            for (int axis = 0; axis < 3; ++axis) {
+                result.min()[axis] = vertex_position(e[std::size_t(axis)])[axis];
+                result.max()[axis] = vertex_position(e[std::size_t(axis + 3)])[axis];
+            }
+        }
+
         const Kinetic_AABB_tree& m_tree;
-        mutable std::vector<char> m_evaluated;
-        std::unique_ptr<Eigen::Vector3d[]> m_positions;
-        mutable std::vector<char> m_boxed;
-        std::unique_ptr<Box[]> m_boxes;
+        std::unique_ptr<internal::Query_memo> m_memo;
+        std::uint32_t m_stamp;
     };
 
     /// `other` as a query reads it: a Query_view for a kinetic tree, the tree itself otherwise.
@@ -489,11 +526,14 @@ private:
             m_free_nodes.pop_back();
             m_nodes[n] = internal::AABB_node{};
             m_extreme[n] = unset_extremes();
+            m_updated_in_round[n] = 0;
         } else {
             n = Node_index(m_nodes.size());
             m_nodes.push_back({});
             m_extreme.push_back(unset_extremes());
+            m_updated_in_round.push_back(0);
             m_queue.resize(m_nodes.size() * bound_count);
+            m_overtaker.resize(m_nodes.size() * bound_count, no_node);
         }
         return n;
     }
@@ -532,7 +572,7 @@ private:
             for (int b = 0; b < bound_count; ++b) {
                 if (update_bound(n, b)) {
                     any = true;
-                    if (!first || !from_is_new) ++m_stats.bv_updates;
+                    if (!first || !from_is_new) count_update(n);
                 }
             }
             if (!any && !first) break;
@@ -547,7 +587,8 @@ private:
         std::vector<Node_index> order;
         internal::postorder(m_nodes, m_root, order);
         for (const Node_index n : order)
-            for (int b = 0; b < bound_count; ++b) update_bound(n, b);
+            if (!m_nodes[n].is_leaf())
+                for (int b = 0; b < bound_count; ++b) update_bound(n, b);
     }
 
     /// Failure time after now() of "x stays the extreme of bound b against y".
@@ -560,28 +601,49 @@ private:
                       : m_flightplans[y].next_crossing(m_flightplans[x], axis, m_now);
     }
 
-    /// Chooses the extreme of node n for bound b among its candidates as the one that holds just
-    /// after now() (keeping the current extreme when it still holds, so ties never cause swaps),
-    /// and schedules its certificate. Returns whether the extreme changed.
-    bool update_bound(Node_index n, int b)
+    /// Whether vertex v is a candidate for bound b of a node whose child is `child`: v is the
+    /// child's extreme (inner child) or one of its primitive's vertices (leaf child).
+    bool is_candidate(Index v, Node_index child, int b) const
     {
-        constexpr std::size_t capacity = P::vertex_count > 2 ? P::vertex_count : 2;
+        if (!m_nodes[child].is_leaf()) return m_extreme[child][std::size_t(b)] == v;
+        const P& p = m_primitives[m_nodes[child].primitive];
+        for (std::size_t k = 0; k < P::vertex_count; ++k)
+            if (Index(p.vertex(k)) == v) return true;
+        return false;
+    }
+
+    /// Chooses the extreme of inner node n for bound b among its candidates (each child's extreme,
+    /// or all vertices of a leaf child's primitive) as the one that holds just after now() (keeping
+    /// the current extreme when it still holds, so ties never cause swaps), and schedules its
+    /// certificate. At an event, `overtaker` is the candidate whose crossing made the certificate
+    /// fail; trying it first as the new extreme saves the certificate computations against the
+    /// extreme it overtook. Returns whether the extreme changed.
+    bool update_bound(Node_index n, int b, Index overtaker = no_node)
+    {
+        constexpr std::size_t capacity = 2 * P::vertex_count;
         std::array<Index, capacity> candidates;
-        std::size_t count;
+        std::size_t count = 0;
         const internal::AABB_node& node = m_nodes[n];
-        if (node.is_leaf()) {
-            const P& p = m_primitives[node.primitive];
-            for (std::size_t k = 0; k < P::vertex_count; ++k) candidates[k] = p.vertex(k);
-            count = P::vertex_count;
-        } else {
-            candidates[0] = m_extreme[node.left][std::size_t(b)];
-            candidates[1] = m_extreme[node.right][std::size_t(b)];
-            count = 2;
+        PCCD_debug_precondition(!node.is_leaf());
+        for (const Node_index child : {node.left, node.right}) {
+            const auto add = [&](Index v) {
+                for (std::size_t k = 0; k < count; ++k)
+                    if (candidates[k] == v) return;
+                candidates[count++] = v;
+            };
+            if (!m_nodes[child].is_leaf()) {
+                add(m_extreme[child][std::size_t(b)]);
+            } else {
+                const P& p = m_primitives[m_nodes[child].primitive];
+                for (std::size_t k = 0; k < P::vertex_count; ++k) add(p.vertex(k));
+            }
         }
         const Index current = m_extreme[n][std::size_t(b)];
         Index champion = candidates[0];
         for (std::size_t k = 0; k < count; ++k)
             if (candidates[k] == current) champion = current;
+        for (std::size_t k = 0; k < count; ++k)
+            if (candidates[k] == overtaker) champion = overtaker;
 
         std::array<double, capacity> fails;
         std::array<bool, capacity> known{};
@@ -597,10 +659,16 @@ private:
             }
         }
         double certificate = never;
+        Index witness = no_node;
         for (std::size_t k = 0; k < count; ++k) {
             if (candidates[k] == champion) continue;
-            certificate = std::min(certificate, known[k] ? fails[k] : failure(champion, candidates[k], b));
+            const double f = known[k] ? fails[k] : failure(champion, candidates[k], b);
+            if (f < certificate) {
+                certificate = f;
+                witness = candidates[k];
+            }
         }
+        m_overtaker[certificate_id(n, b)] = witness;
         // Two candidates cannot both fail immediately (Piecewise_cubic.h explains why); with three,
         // rounding could make "holds just after now" intransitive. Deferring by one ulp keeps time
         // strictly increasing, so event processing always terminates.
@@ -611,18 +679,33 @@ private:
         return changed;
     }
 
+    /// Counts a change of one bound's extreme at node n (and n itself once per update round).
+    void count_update(Node_index n)
+    {
+        ++m_stats.bv_updates;
+        if (m_updated_in_round[n] != m_round) {
+            m_updated_in_round[n] = m_round;
+            ++m_stats.node_updates;
+        }
+    }
+    void next_update_round()
+    {
+        if (++m_round == 0) { // after 2^32 rounds: restart the stamps
+            std::fill(m_updated_in_round.begin(), m_updated_in_round.end(), 0);
+            m_round = 1;
+        }
+    }
+
     void propagate(Node_index n, int b)
     {
         for (Node_index p = m_nodes[n].parent; p != no_node; p = m_nodes[p].parent) {
             if (!update_bound(p, b)) break;
-            ++m_stats.bv_updates;
+            count_update(p);
         }
     }
 
     std::vector<F> m_flightplans;
-    std::vector<P> m_primitives;
-    std::vector<char> m_alive;
-    std::vector<Index> m_free_primitives;
+    internal::Primitive_slots<P> m_primitives;
     std::vector<Node_index> m_leaf_of;
     std::vector<std::vector<Index>> m_incident;
     std::vector<internal::AABB_node> m_nodes;
@@ -630,6 +713,12 @@ private:
     std::vector<Node_index> m_free_nodes;
     Node_index m_root = no_node;
     Queue m_queue;
+    /// Per certificate, the candidate that attains its failure time (the next extreme at the event).
+    std::vector<Index> m_overtaker;
+    internal::Query_memo_pool m_memo_pool;
+    /// Per node, the last update round (advance_to call or run-time change) that changed it.
+    std::vector<std::uint32_t> m_updated_in_round;
+    std::uint32_t m_round = 1;
     double m_now;
     Statistics m_stats;
 };

@@ -19,6 +19,7 @@
 #include <PCCD/Kinetic/Kinetic_primitives.h>
 #include <PCCD/Kinetic/internal/AABB_tree_build.h>
 #include <PCCD/Kinetic/internal/AABB_tree_queries.h>
+#include <PCCD/Kinetic/internal/Primitive_slots.h>
 #include <PCCD/concepts/Flightplan.h>
 #include <PCCD/concepts/KineticPrimitive.h>
 
@@ -60,14 +61,15 @@ public:
     static constexpr Node_index no_node = internal::no_node;
 
     /// Builds the tree at time `t0` (median split, like Kinetic_AABB_tree).
-    /// \throws Invalid_input if t0 is not finite or a primitive refers to a vertex out of range.
+    /// \throws Invalid_input if t0 is not finite, a primitive refers to a vertex out of range, or
+    ///         there are 2^31 primitives or more.
     /// Complexity: O(n log n).
     Refit_AABB_tree(std::vector<F> flightplans, std::vector<P> primitives, double t0 = 0.0, Refit_options options = {})
-        : m_flightplans(std::move(flightplans)), m_primitives(std::move(primitives)), m_options(options), m_now(t0)
+        : m_flightplans(std::move(flightplans)), m_primitives(std::move(primitives), "Refit_AABB_tree"),
+          m_options(options), m_now(t0)
     {
         if (!std::isfinite(t0)) throw Invalid_input(internal::concat("Refit_AABB_tree: start time ", t0, " is not finite"));
-        for (Index i = 0; i < Index(m_primitives.size()); ++i) check_primitive(m_primitives[i], i);
-        m_alive.assign(m_primitives.size(), 1);
+        for (Index i = 0; i < Index(m_primitives.capacity()); ++i) check_primitive(m_primitives[i], i);
         evaluate_positions();
         rebuild_topology();
         refit();
@@ -113,18 +115,8 @@ public:
     /// Inserts a primitive and rebuilds the tree at now(). Complexity: O(n log n).
     Index insert(const P& primitive)
     {
-        check_primitive(primitive, Index(m_primitives.size()));
-        Index i;
-        if (!m_free_primitives.empty()) {
-            i = m_free_primitives.back();
-            m_free_primitives.pop_back();
-            m_primitives[i] = primitive;
-            m_alive[i] = 1;
-        } else {
-            i = Index(m_primitives.size());
-            m_primitives.push_back(primitive);
-            m_alive.push_back(1);
-        }
+        check_primitive(primitive, Index(m_primitives.capacity()));
+        const Index i = m_primitives.insert(primitive, "Refit_AABB_tree");
         rebuild_topology();
         refit();
         return i;
@@ -134,8 +126,7 @@ public:
     {
         if (!contains(i))
             throw Invalid_input(internal::concat("Refit_AABB_tree::remove: primitive ", i, " is not in the tree"));
-        m_alive[i] = 0;
-        m_free_primitives.push_back(i);
+        m_primitives.remove(i);
         rebuild_topology();
         refit();
     }
@@ -144,8 +135,8 @@ public:
     /// \name Access and nodes (same interface as Kinetic_AABB_tree)
     /// @{
     std::size_t vertex_count() const { return m_flightplans.size(); }
-    std::size_t primitive_count() const { return m_primitives.size() - m_free_primitives.size(); }
-    bool contains(Index i) const { return i < m_primitives.size() && m_alive[i]; }
+    std::size_t primitive_count() const { return m_primitives.live_count(); }
+    bool contains(Index i) const { return m_primitives.contains(i); }
     const P& primitive(Index i) const { return m_primitives[i]; }
     const F& flightplan(Index v) const { return m_flightplans[v]; }
     /// Position of vertex v at now() (cached at the last update).
@@ -218,10 +209,10 @@ private:
     void rebuild_topology()
     {
         std::vector<Index> ids;
-        ids.reserve(m_primitives.size());
-        m_centroids.resize(m_primitives.size());
-        for (Index i = 0; i < Index(m_primitives.size()); ++i) {
-            if (!m_alive[i]) continue;
+        ids.reserve(m_primitives.live_count());
+        m_centroids.resize(m_primitives.capacity());
+        for (Index i = 0; i < Index(m_primitives.capacity()); ++i) {
+            if (!m_primitives.contains(i)) continue;
             ids.push_back(i);
             Eigen::Vector3d c = Eigen::Vector3d::Zero();
             for (std::size_t k = 0; k < P::vertex_count; ++k) c += m_positions[m_primitives[i].vertex(k)];
@@ -251,9 +242,7 @@ private:
     }
 
     std::vector<F> m_flightplans;
-    std::vector<P> m_primitives;
-    std::vector<char> m_alive;
-    std::vector<Index> m_free_primitives;
+    internal::Primitive_slots<P> m_primitives;
     Refit_options m_options;
     double m_now;
     std::vector<Eigen::Vector3d> m_positions;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <ctime>
 #include <string>
 #include <utility>
 #include <vector>
@@ -49,6 +50,8 @@ struct Kinetic_run_result {
     std::uint64_t frames = 0;                   ///< query frames played
     std::uint64_t nodes = 0;                    ///< nodes of the tree over the scene
     std::uint64_t bv_updates = 0;               ///< kinetic: bound changes; baselines: node boxes recomputed
+    /// kinetic only: distinct nodes changed per query frame, summed (Kinetic_statistics::node_updates)
+    std::uint64_t node_updates = 0;
     std::uint64_t events = 0;                   ///< kinetic only: certificate failures processed
     std::uint64_t certificate_computations = 0; ///< kinetic only, after construction
     std::uint64_t queries = 0;                  ///< queries answered
@@ -57,6 +60,11 @@ struct Kinetic_run_result {
     double update_ms_per_frame = 0.0;           ///< mean time of advance_to per frame
     double query_ms_per_frame = 0.0;            ///< mean time of the queries per frame
     double ms_per_frame = 0.0;                  ///< update + queries
+    /// The same three as processor time of the process (std::clock), which a busy machine inflates
+    /// far less than wall-clock time (it excludes the time the thread waits for a core).
+    double update_cpu_ms_per_frame = 0.0;
+    double query_cpu_ms_per_frame = 0.0;
+    double cpu_ms_per_frame = 0.0;
 };
 
 namespace internal {
@@ -109,23 +117,33 @@ Kinetic_run_result run_kinetic_scene(const Kinetic_scene<P>& scene, Kinetic_meth
 
     auto play = [&](auto& tree) {
         double update = 0.0, query = 0.0;
+        std::clock_t update_cpu = 0, query_cpu = 0;
         for (std::uint64_t k = 1;; ++k) {
             const double t = scene.start_time + double(k) / options.query_hz;
             if (t > scene.end_time) break;
+            const std::clock_t c0 = std::clock();
             const auto t0 = Clock::now();
             tree.advance_to(t);
             obstacle.advance_to(t);
             const auto t1 = Clock::now();
+            const std::clock_t c1 = std::clock();
             internal::answer_queries(tree, obstacle, has_obstacle, range, options, r, pairs, hits);
             const auto t2 = Clock::now();
+            const std::clock_t c2 = std::clock();
             update += std::chrono::duration<double, std::milli>(t1 - t0).count();
             query += std::chrono::duration<double, std::milli>(t2 - t1).count();
+            update_cpu += c1 - c0;
+            query_cpu += c2 - c1;
             ++r.frames;
         }
         const double frames = double(std::max<std::uint64_t>(r.frames, 1));
         r.update_ms_per_frame = update / frames;
         r.query_ms_per_frame = query / frames;
         r.ms_per_frame = (update + query) / frames;
+        const double cpu_ms = 1000.0 / double(CLOCKS_PER_SEC) / frames;
+        r.update_cpu_ms_per_frame = double(update_cpu) * cpu_ms;
+        r.query_cpu_ms_per_frame = double(query_cpu) * cpu_ms;
+        r.cpu_ms_per_frame = double(update_cpu + query_cpu) * cpu_ms;
     };
 
     const auto build_start = Clock::now();
@@ -137,6 +155,7 @@ Kinetic_run_result run_kinetic_scene(const Kinetic_scene<P>& scene, Kinetic_meth
         r.nodes = tree.node_count();
         r.bv_updates = tree.statistics().bv_updates;
         r.events = tree.statistics().events;
+        r.node_updates = tree.statistics().node_updates;
         r.certificate_computations = tree.statistics().certificate_computations;
     } else {
         Refit_AABB_tree<F, P> tree(scene.flightplans, scene.primitives, scene.start_time,
