@@ -2,7 +2,9 @@
 // rejected; plus a user-defined point type going through a point map (issue: foundation, item 5).
 #include <PCCD/Eigen_kernel.h>
 #include <PCCD/Identity_point_map.h>
+#include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud.h>
+#include <PCCD/Point_cloud_object.h>
 #include <PCCD/concepts/PointCloudKernel.h>
 #include <PCCD/concepts/ProximityGraph.h>
 #include <PCCD/concepts/ReadablePointMap.h>
@@ -35,6 +37,16 @@ static_assert(PCCD::PointCloudKernel<PCCD::Eigen_kernel<float>>);
 static_assert(PCCD::PointCloudKernel<Sc_double>);
 static_assert(PCCD::PointCloudKernel<CGAL::Simple_cartesian<float>>);
 static_assert(PCCD::PointCloudKernel<Epick>);
+
+// Intersection (doc/reference/intersection-reference.md).
+static_assert(PCCD::CollisionObject<PCCD::Point_cloud_object<PCCD::Eigen_kernel<double>>>);
+static_assert(PCCD::CollisionObject<PCCD::Point_cloud_object<PCCD::Eigen_kernel<float>>>);
+static_assert(PCCD::CollisionObject<PCCD::Point_cloud_object<Epick>>);
+static_assert(PCCD::CollisionObject<PCCD::Point_cloud_object<Sc_double>>);
+static_assert(!PCCD::CollisionObject<PCCD::Point_cloud<>>);
+static_assert(PCCD::LeafIntersector<PCCD::Interpolation_search>);
+static_assert(PCCD::LeafIntersector<PCCD::Randomized_sampling>);
+static_assert(!PCCD::LeafIntersector<PCCD::Intersection_options>);
 static_assert(!PCCD::PointCloudKernel<Epeck>, "exact number types are not floating point");
 static_assert(!PCCD::PointCloudKernel<int>);
 static_assert(!PCCD::PointCloudKernel<std::vector<double>>);

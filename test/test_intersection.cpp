@@ -325,7 +325,24 @@ TEST_CASE("Invalid query options are rejected with a message naming them", "[int
     const auto rst = [&](const PCCD::Randomized_sampling& p) { return PCCD::do_intersect(s.a, id, s.b, id, {}, p); };
     CHECK_THROWS_WITH(rst({.max_samples = 0}), Contains("max_samples"));
     CHECK_THROWS_WITH(rst({.epsilon_factor = -1.0}), Contains("epsilon_factor"));
-    // Two identical objects at the identical pose: they intersect everywhere.
+    // Two identical objects at the identical pose (coincident surfaces, doc/manual/intersection.md):
+    // RST reports them; isearch does here (a sample's |f| is below epsilon), not on every cloud.
     CHECK(PCCD::do_intersect(s.a, id, s.a, id).intersects);
     CHECK(PCCD::do_intersect(s.a, id, s.a, id, {}, PCCD::Randomized_sampling{}).intersects);
+}
+
+TEST_CASE("Objects of different kernels collide with each other", "[intersection]")
+{
+    const auto sa = pccd_test::sample_shape(pccd_test::unit_sphere(), 3000, 0.0, 41);
+    const auto sb = pccd_test::sample_shape(pccd_test::unit_sphere(), 3000, 0.0, 42);
+    std::vector<Eigen::Vector3f> fb;
+    for (Eigen::Index i = 0; i < sb.points.cols(); ++i) fb.push_back(sb.points.col(i).cast<float>());
+    const PCCD::Point_cloud_object<> a(pccd_test::columns(sa.points));
+    const PCCD::Point_cloud_object<PCCD::Eigen_kernel<float>> b(fb);
+    for (double d : {0.5, 1.5, 2.5}) {
+        const auto isearch = PCCD::do_intersect(a, Rigid_transform_3<double>(), b, shifted(d));
+        const auto rst = PCCD::do_intersect(a, Rigid_transform_3<double>(), b, shifted(d), {}, PCCD::Randomized_sampling{});
+        CHECK(isearch.intersects == (d < 2.0));
+        CHECK(rst.intersects == (d < 2.0));
+    }
 }

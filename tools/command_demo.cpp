@@ -1,13 +1,16 @@
 // pccd demo: a tour of PCCD on built-in data (the scanned bunny, or the procedural torus when
 // libcgal-demo is absent): sampling, the point cloud and its kd-tree, the preprocessed object
-// (proximity graph, CPSP map, oriented normals) and its implicit surface, and benchmark poses.
+// (proximity graph, CPSP map, oriented normals) and its implicit surface, and two copies of it
+// collided at benchmark poses (do_intersect with both policies, intersection_points).
 #include "commands.h"
 #include "demo_data.h"
 
+#include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Sampling/pose_generator.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -88,12 +91,31 @@ void run_demo(const Demo_options& options)
                     defined > 0 ? sum / defined : 0.0, defined, probes);
     }
 
-    const auto poses = PCCD::generate_benchmark_poses({.distances = {0.0, 1.0, 2.0}, .rotations_per_distance = 1,
-                                                       .seed = options.seed});
-    std::printf("benchmark poses (ALGORITHMS.md section 8): object B translated by d along x\n");
+    const auto poses = PCCD::generate_benchmark_poses({.distances = {0.0, 1.0, 1.5, 2.0, 2.5},
+                                                       .rotations_per_distance = 1, .seed = options.seed});
+    std::printf("collisions of two copies (ALGORITHMS.md sections 5, 6, 8): A = [R_A | 0], B = [R_B | (d, 0, 0)]\n");
     for (const auto& pose : poses) {
-        const Eigen::Vector3d t = pose.pose_b.translation();
-        std::printf("  d = %.2f: T_B translation (%.2f, %.2f, %.2f)\n", pose.distance, t.x(), t.y(), t.z());
+        auto t0 = Clock::now();
+        const PCCD::Intersection_result hit = PCCD::do_intersect(object_state, pose.pose_a, object_state, pose.pose_b);
+        const double isearch_us = 1000.0 * ms_since(t0);
+        t0 = Clock::now();
+        const PCCD::Intersection_result rst = PCCD::do_intersect(object_state, pose.pose_a, object_state, pose.pose_b,
+                                                                 {}, PCCD::Randomized_sampling{});
+        const double rst_us = 1000.0 * ms_since(t0);
+        std::printf("  d = %.2f: interpolation search %-12s %5zu f evaluations %8.1f us | RST %-12s %6zu f evaluations %9.1f us\n",
+                    pose.distance, hit.intersects ? "intersecting" : "separate", hit.counters.f_evaluations, isearch_us,
+                    rst.intersects ? "intersecting" : "separate", rst.counters.f_evaluations, rst_us);
+        if (hit.intersects && pose.distance == 1.0) {
+            t0 = Clock::now();
+            const PCCD::Intersection_result curve =
+                PCCD::intersection_points(object_state, pose.pose_a, object_state, pose.pose_b);
+            double worst = 0.0;
+            for (const auto& p : curve.points)
+                if (p.kind == PCCD::Intersection_point_kind::refined)
+                    worst = std::max(worst, std::max(std::abs(p.f_a), std::abs(p.f_b)));
+            std::printf("            intersection_points: %zu points on the curves in %.1f ms, max(|f_A|, |f_B|) <= %.2g\n",
+                        curve.points.size(), ms_since(t0), worst);
+        }
     }
 }
 

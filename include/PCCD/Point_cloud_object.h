@@ -472,7 +472,7 @@ Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path,
     in.read(points.data(), sizeof(double) * 3 * n);
     in.read(normals.data(), sizeof(double) * 3 * n);
     const auto geodesic_size = in.get<std::uint64_t>();
-    if (in.remaining() != geodesic_size + sizeof(std::uint64_t))
+    if (in.remaining() < sizeof(std::uint64_t) || in.remaining() - sizeof(std::uint64_t) != geodesic_size)
         in.fail("inconsistent size of the geodesic section");
     if (!(std::isfinite(r) && r > 0.0)) in.fail(internal::concat("invalid sampling radius ", r));
 

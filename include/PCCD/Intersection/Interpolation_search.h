@@ -38,7 +38,8 @@ enum class Partner_choice : std::uint8_t {
 ///
 /// For one role (sampled cloud S, tested surface f_T, the other object), with Ŝ the points of S in
 /// the overlap region:
-/// 1. n = a ln a + c a random points of Ŝ without replacement, at least min_samples and at most |Ŝ|,
+/// 1. n = a ln a + c a random points of Ŝ without replacement, at least min_samples, at most |Ŝ|
+///    and, for first-hit queries, at most max_samples,
 ///    where a = |Ŝ| (r(S) / r_s)^2 is the number of conceptual surfels of radius r_s = rho / 2 in the
 ///    region and rho the outer annulus radius (annulus_outer times S's CPSP bound).
 /// 2. For a sample p_i with f_T(p_i) defined and |f_T(p_i)| <= lipschitz_slack rho (otherwise no sign
@@ -55,6 +56,13 @@ enum class Partner_choice : std::uint8_t {
 struct Interpolation_search {
     /// n_min: the least number of samples per role (WSCG05: 200 suffice for <= 1 % error).
     std::size_t min_samples = 200;
+    /// The most samples per role of the covering formula (>= min_samples), for do_intersect() only:
+    /// intersection_points() takes the full covering count, to cover the curves. With CPSP lists bounded
+    /// at the kernel support (3 r by default), surfels reachable by the annulus hold only a few
+    /// points, so a ln a + c a exceeds the region and the formula alone means visiting every region
+    /// point, which makes near misses slow. Default 400: WSCG05 Fig. 7 as measured here
+    /// (doc/benchmarks.md) shows no error for n >= 100 per role.
+    std::size_t max_samples = 400;
     /// When set: exactly this many samples per role (at most the region's size), instead of the
     /// covering formula; WSCG05 Fig. 7 sweeps it (n = 20 ... 200). Must be >= 1 when set.
     std::optional<std::size_t> samples = std::nullopt;
@@ -79,11 +87,15 @@ struct Interpolation_search {
     {
         if (min_samples == 0) throw Invalid_input("interpolation search: min_samples must be >= 1");
         if (samples && *samples == 0) throw Invalid_input("interpolation search: samples must be >= 1 when set");
+        if (max_samples < min_samples)
+            throw Invalid_input(internal::concat("interpolation search: max_samples ", max_samples,
+                                                 " must be >= min_samples ", min_samples));
         if (!(std::isfinite(coverage_c) && coverage_c >= 0.0))
             throw Invalid_input(internal::concat("interpolation search: coverage_c ", coverage_c, " must be finite and >= 0"));
-        if (!(annulus_outer > 0.0 && annulus_outer <= 1.0))
+        // Quiet comparisons: a NaN field must reach the message, not trap (Debug FP traps).
+        if (!(std::isgreater(annulus_outer, 0.0) && std::islessequal(annulus_outer, 1.0)))
             throw Invalid_input(internal::concat("interpolation search: annulus_outer ", annulus_outer, " must be in (0, 1]"));
-        if (!(annulus_width > 0.0 && annulus_width <= 1.0))
+        if (!(std::isgreater(annulus_width, 0.0) && std::islessequal(annulus_width, 1.0)))
             throw Invalid_input(internal::concat("interpolation search: annulus_width ", annulus_width, " must be in (0, 1]"));
         if (partner_candidates == 0) throw Invalid_input("interpolation search: partner_candidates must be >= 1");
         if (!(std::isfinite(lipschitz_slack) && lipschitz_slack >= 1.0))
@@ -115,14 +127,15 @@ struct Interpolation_search {
     }
 
     /// The number of samples for a region of `region_points` points of a cloud with sampling radius
-    /// r and outer annulus radius rho.
-    std::size_t sample_count(std::size_t region_points, double r, double rho) const
+    /// r and outer annulus radius rho; `capped`: at most max_samples (first-hit queries).
+    std::size_t sample_count(std::size_t region_points, double r, double rho, bool capped = true) const
     {
         if (region_points == 0) return 0;
         if (samples) return std::min(*samples, region_points);
         const double rs = 0.5 * rho;
         const double a = std::max(1.0, double(region_points) * (r / rs) * (r / rs));
-        const double wanted = std::max(double(min_samples), a * std::log(a) + coverage_c * a);
+        double wanted = std::max(double(min_samples), a * std::log(a) + coverage_c * a);
+        if (capped) wanted = std::min(wanted, double(max_samples));
         return wanted >= double(region_points) ? region_points : std::size_t(std::ceil(wanted));
     }
 
@@ -153,10 +166,13 @@ struct Interpolation_search {
         while (!state.stop()) {
             // n = a ln a + c a samples of the region (an estimate until the region size is known).
             const std::size_t drawn = region_sampler.accepted();
+            // The caps hold from the first draw (the region-size estimate below waits for 64 draws):
+            // a fixed count, or max_samples for first-hit queries.
             if (samples && drawn >= *samples) return;
+            if (!samples && state.sink.first_hit() && drawn >= max_samples) return;
             if (drawn >= 64 || region_sampler.region_size_known()) {
                 const std::size_t size = std::size_t(std::ceil(region_sampler.region_size()));
-                if (drawn >= sample_count(size, r, rho)) return;
+                if (drawn >= sample_count(size, r, rho, state.sink.first_hit())) return;
             }
             if (!region_sampler.next(state.engine, i)) return;
             ++state.counters.samples;

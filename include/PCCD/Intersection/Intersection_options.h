@@ -36,6 +36,7 @@ enum class Refinement : std::uint8_t {
 
 /// Options of do_intersect() and intersection_points(). Every field has a documented default; use
 /// designated initializers: `{.seed = 7, .refinement = Refinement::none}`.
+/// A plain value: one instance may be shared by any number of concurrent queries (they only read it).
 struct Intersection_options {
     /// Seed of every random choice of the query. The same seed gives the same answer, points and
     /// counters on every platform and for any number of concurrent queries.

@@ -54,7 +54,8 @@ inline const char* to_string(Intersection_status status)
     return "unknown";
 }
 
-/// Work counters of one query. Deterministic for a given seed, objects, poses and options.
+/// Work counters of one query. Deterministic for a given seed, objects, poses and options (whatever
+/// the number of threads running queries and their order). A plain value, owned by its result.
 struct Intersection_counters {
     /// Evaluations of f_A or f_B, defined or not (the figure of WSCG05 Fig. 11).
     std::size_t f_evaluations = 0;
@@ -98,7 +99,8 @@ struct Intersection_counters {
     friend bool operator==(const Intersection_counters&, const Intersection_counters&) = default;
 };
 
-/// The result of do_intersect() and intersection_points().
+/// The result of do_intersect() and intersection_points(). A plain value: each query returns its own,
+/// so concurrent queries share nothing through their results.
 struct Intersection_result {
     /// True when an intersection was found.
     bool intersects = false;

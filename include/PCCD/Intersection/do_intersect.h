@@ -87,7 +87,8 @@ Intersection_result do_intersect(const A& a, const Rigid_transform_3<double>& po
 /// Points on the intersection curves of the two posed surfaces, no two closer than
 /// options.point_spacing, refined as options.refinement says (world coordinates). The whole sample
 /// the policy asks for is searched (no early stop). Same parameters, guarantees and exceptions as
-/// do_intersect().
+/// do_intersect(); in particular any number may run concurrently on the same objects, and the
+/// result (points bit for bit, counters) depends only on the arguments.
 template <CollisionObject A, CollisionObject B, LeafIntersector Policy = Interpolation_search>
 Intersection_result intersection_points(const A& a, const Rigid_transform_3<double>& pose_a, const B& b,
                                         const Rigid_transform_3<double>& pose_b,

@@ -19,7 +19,8 @@
 
 namespace PCCD::internal {
 
-/// Both surfaces at the world point x: nullopt unless both are defined.
+/// Both surfaces at the world point x: nullopt unless both are defined, and when the budget runs
+/// out after the first evaluation (so a refinement step never overdraws it).
 template <class OA, class OB>
 std::optional<std::pair<Surface_evaluation, Surface_evaluation>> evaluate_both(const Posed_object<OA>& a,
                                                                             const Posed_object<OB>& b,
@@ -27,7 +28,7 @@ std::optional<std::pair<Surface_evaluation, Surface_evaluation>> evaluate_both(c
                                                                             Query_state& state)
 {
     Surface_evaluation ea = state.evaluate_world(a, x);
-    if (!ea.defined()) return std::nullopt;
+    if (!ea.defined() || state.out_of_budget()) return std::nullopt;
     Surface_evaluation eb = state.evaluate_world(b, x);
     if (!eb.defined()) return std::nullopt;
     return std::make_pair(std::move(ea), std::move(eb));

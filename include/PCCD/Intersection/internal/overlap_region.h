@@ -120,7 +120,7 @@ std::vector<std::uint32_t> region_points(const Point_cloud_hierarchy& s, const P
 ///
 /// Two phases keep a first-hit query cheap when the objects overlap deeply and exact when they barely
 /// touch: first, rejection sampling from all of s, testing each drawn point against t's hierarchy
-/// (O(log N) each); once fewer than a quarter of the draws land in the region (after 64 draws), the
+/// (O(log N) each); once fewer than one draw in 16 lands in the region (after 128 draws), the
 /// region is enumerated through the overlapping leaf pairs, minus the points already drawn, and
 /// drawn from that list. Both phases draw uniformly from the region points not yet drawn, so the
 /// sequence is a uniform random permutation of the region either way.
@@ -143,7 +143,7 @@ public:
         if (m_empty) return false;
         while (!m_enumerated) {
             if (m_drawn == m_size) return false;
-            if (m_drawn >= 64 && 4 * m_accepted < m_drawn) {
+            if (m_drawn >= 128 && 16 * m_accepted < m_drawn) {
                 enumerate();
                 break;
             }
