@@ -16,6 +16,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "kinetic_test_helpers.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -34,20 +36,7 @@ std::size_t check_against_brute_force(const Tree& tree)
     using Node = typename Tree::Node_index;
     if (tree.root() == Tree::no_node) return 0;
     const double t = tree.now();
-    std::vector<Node> order;
-    std::vector<Node> stack{tree.root()};
-    while (!stack.empty()) {
-        const Node n = stack.back();
-        stack.pop_back();
-        order.push_back(n);
-        if (!tree.is_leaf(n)) {
-            REQUIRE(tree.parent(tree.left(n)) == n);
-            REQUIRE(tree.parent(tree.right(n)) == n);
-            stack.push_back(tree.left(n));
-            stack.push_back(tree.right(n));
-        }
-    }
-    REQUIRE(order.size() == tree.node_count());
+    const std::vector<Node> order = pccd_test::nodes_in_preorder(tree);
     std::vector<Eigen::AlignedBox3d> truth(tree.node_count() + 64);
     std::size_t mismatches = 0;
     for (auto it = order.rbegin(); it != order.rend(); ++it) {
@@ -238,22 +227,7 @@ TEST_CASE("events over an animation with linear flightplans stay within the boun
         }
         PCCD::Kinetic_AABB_tree<PCCD::Linear_flightplan, PCCD::Kinetic_point> tree(plans, points, -100.0);
         // Sum of (m - 1) over nodes: subtree sizes.
-        std::vector<std::size_t> size(tree.node_count(), 0);
-        std::vector<std::uint32_t> order, stack{tree.root()};
-        while (!stack.empty()) {
-            const auto x = stack.back();
-            stack.pop_back();
-            order.push_back(x);
-            if (!tree.is_leaf(x)) {
-                stack.push_back(tree.left(x));
-                stack.push_back(tree.right(x));
-            }
-        }
-        std::uint64_t envelope_bound = 0;
-        for (auto it = order.rbegin(); it != order.rend(); ++it) {
-            size[*it] = tree.is_leaf(*it) ? 1 : size[tree.left(*it)] + size[tree.right(*it)];
-            envelope_bound += 6 * (size[*it] - 1);
-        }
+        const std::uint64_t envelope_bound = pccd_test::envelope_bound(tree);
         // From t = -100 to +100 every crossing of the lines happens (|crossing time| <= 2 / |dv|
         // is rarely beyond 100; the bound holds for any interval).
         tree.advance_to(100.0);

@@ -6,8 +6,10 @@
 The seeds are small valid files of every variant the readers accept, plus broken ones near the
 edge of each check. --object: an object file written by Point_cloud_object::save (of a small
 cloud); it becomes the fuzz_load_object seeds, with their mode byte (see fuzz_load_object.cpp),
-together with its embedded geodesic section. The fuzzing campaign merges these seeds with what the
-fuzzers find into test/fuzz/corpus/ (doc/reliability_fuzzing.md)."""
+together with its embedded geodesic section. The fuzz_do_intersect seeds (queries on small
+spheres, patches, degenerate clouds, bad poses and refused options) need no argument. The fuzzing
+campaign merges these seeds with what the fuzzers find into test/fuzz/corpus/
+(doc/reliability.md, "Fuzzing")."""
 import argparse
 import os
 import struct
@@ -140,12 +142,99 @@ def object_seeds(path):
     }
 
 
+def do_intersect_query(rst=False, all_points=False, symmetric=True, object_boxes=False, refinement=2,
+                       epsilon=None, budget=None, spacing=None, knn=False, random_partners=False, samples=None,
+                       seed=7, refinement_samples=16, min_samples=20, max_samples=60, partners=4,
+                       rst_max=300, leaf_size=16, radius_samples=60):
+    """The query part of a fuzz_do_intersect input (layout: fuzz_do_intersect.cpp). epsilon and
+    spacing: None (unset), an int (a selector byte, 2^(s/8 - 16)) or a float (raw double)."""
+    def value(v):
+        if v is None or isinstance(v, int):
+            return struct.pack("<Bd", v or 0, 0.0)
+        return struct.pack("<Bd", 255, v)
+    flags = (rst | all_points << 1 | symmetric << 2 | object_boxes << 3 | refinement << 4
+             | (epsilon is not None) << 6 | (budget is not None) << 7)
+    more = (spacing is not None) | knn << 1 | random_partners << 2 | (samples is not None) << 3
+    return (bytes([flags, more]) + struct.pack("<Q", seed) + value(epsilon) + struct.pack("<H", budget or 0)
+            + value(spacing) + bytes([refinement_samples, min_samples, max_samples, samples or 0, partners])
+            + struct.pack("<H", rst_max) + bytes([leaf_size, radius_samples]))
+
+
+def sphere_cloud(n, centre=(0, 0, 0), radius_byte=48, jitter=0, bad=None):
+    """Kind 3: radius 0.25 + radius_byte / 64 (48: 1.0), centre in sixteenths; bad = (index, axis,
+    which) corrupts one point (which: NaN, inf, -inf, 1e300, max)."""
+    kind = 3 | (8 if bad else 0)
+    out = bytes([kind, n]) + struct.pack("<bbbB", *centre, radius_byte)
+    out += bytes([(jitter * (i % 3 - 1)) & 0xFF for i in range(n)])
+    return out + (bytes(bad) if bad else b"")
+
+
+def patch_cloud(n, spacing_byte=12, heights=0):
+    return bytes([4, n, spacing_byte]) + bytes([(heights * (i % 5 - 2)) & 0xFF for i in range(n)])
+
+
+def pose(tx=0, ty=0, tz=0, quaternion=(0, 0, 0, 0), kind=0, perturb=None):
+    """Quaternion pose; translation in 1/4096 (scale byte 8); kind 2 adds perturb (k, 9 int8)."""
+    out = bytes([kind]) + struct.pack("<hhhhBhhh", *quaternion, 8, tx, ty, tz)
+    if kind == 2:
+        out += bytes([perturb[0]]) + struct.pack("<9b", *perturb[1])
+    return out
+
+
+def do_intersect_seeds():
+    one = 4096
+    sphere = sphere_cloud(120)
+    s = {}
+    s["spheres_overlap"] = do_intersect_query() + sphere + sphere + pose() + pose(one)
+    s["spheres_separate"] = do_intersect_query() + sphere + sphere + pose() + pose(3 * one)
+    s["spheres_identical"] = do_intersect_query(all_points=True) + sphere + sphere + pose() + pose()
+    s["spheres_overlap_all_none"] = do_intersect_query(all_points=True, refinement=0) + sphere + sphere + pose() + pose(one)
+    s["spheres_overlap_all_sampling"] = (do_intersect_query(all_points=True, refinement=1, knn=True)
+                                         + sphere + sphere + pose() + pose(one, one // 2))
+    s["spheres_rst"] = do_intersect_query(rst=True) + sphere + sphere + pose() + pose(one)
+    s["spheres_rst_all_object_boxes"] = (do_intersect_query(rst=True, all_points=True, object_boxes=True)
+                                         + sphere + sphere_cloud(80, jitter=20) + pose() + pose(one))
+    s["spheres_budget"] = (do_intersect_query(all_points=True, budget=37, random_partners=True)
+                           + sphere + sphere + pose(quaternion=(1000, 200, 0, 3000)) + pose(one))
+    s["spheres_epsilon_spacing"] = (do_intersect_query(all_points=True, epsilon=100, spacing=130, samples=40)
+                                    + sphere + sphere + pose() + pose(one))
+    s["patch_sphere"] = (do_intersect_query(all_points=True, symmetric=False)
+                         + patch_cloud(144, heights=3) + sphere_cloud(100, centre=(9, 9, 0), radius_byte=16)
+                         + pose() + pose())
+    s["patch_patch_tilted"] = (do_intersect_query(rst=True) + patch_cloud(100) + patch_cloud(100)
+                               + pose() + pose(one // 4, one // 4, -one // 3, (3000, 3000, 0, 0)))
+    s["lattice_duplicates"] = (do_intersect_query() + bytes([2 | 16, 60, 40]) + bytes(range(0, 180))
+                               + sphere + pose() + pose())
+    s["segment_collinear"] = do_intersect_query() + bytes([5, 50, 1, 2, 3, 16]) + sphere + pose() + pose()
+    s["raw_float"] = (do_intersect_query() + bytes([1, 4]) + struct.pack("<12f", 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1)
+                      + sphere + pose() + pose())
+    s["nan_point"] = do_intersect_query() + sphere_cloud(50, bad=(7, 1, 0)) + sphere + pose() + pose()
+    s["huge_point"] = do_intersect_query() + sphere_cloud(50, bad=(7, 2, 3)) + sphere + pose() + pose()
+    s["single_point"] = do_intersect_query() + sphere_cloud(1) + sphere + pose() + pose()
+    s["pose_raw_nan"] = (do_intersect_query() + sphere + sphere + bytes([3])
+                         + struct.pack("<12d", 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, float("nan"), 0) + pose())
+    s["pose_raw_identity"] = (do_intersect_query() + sphere + sphere + bytes([3])
+                              + struct.pack("<12d", 1, 0, 0, 0.5, 0, 1, 0, 0, 0, 0, 1, 0) + pose())
+    s["pose_perturbed"] = (do_intersect_query() + sphere + sphere + pose() +
+                           pose(one, kind=2, perturb=(3, (1, -1, 0, 0, 2, 0, -3, 0, 1))))
+    s["options_bad_epsilon"] = do_intersect_query(epsilon=-1.0) + sphere + sphere + pose() + pose(one)
+    s["options_nan_spacing"] = (do_intersect_query(all_points=True, spacing=float("nan"))
+                                + sphere + sphere + pose() + pose(one))
+    s["options_zero_budget"] = do_intersect_query(budget=0) + sphere + sphere + pose() + pose(one)
+    s["options_bad_refinement"] = (do_intersect_query(all_points=True, refinement=3)
+                                   + sphere + sphere + pose() + pose(one))
+    s["policy_bad_samples"] = do_intersect_query(min_samples=50, max_samples=10) + sphere + sphere + pose() + pose(one)
+    s["leaf_size_zero"] = do_intersect_query(leaf_size=0) + sphere + sphere + pose() + pose(one)
+    return s
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("out")
     parser.add_argument("--object")
     args = parser.parse_args()
-    targets = {"fuzz_read_ply": ply_seeds(), "fuzz_read_off": off_seeds(), "fuzz_read_xyz": xyz_seeds()}
+    targets = {"fuzz_read_ply": ply_seeds(), "fuzz_read_off": off_seeds(), "fuzz_read_xyz": xyz_seeds(),
+               "fuzz_do_intersect": do_intersect_seeds()}
     if args.object:
         targets["fuzz_load_object"] = object_seeds(args.object)
     for target, seeds in targets.items():

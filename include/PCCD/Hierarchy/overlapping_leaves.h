@@ -29,7 +29,7 @@ struct Oriented_box {
 
 /// Whether the box `a` (in the frame of a's hierarchy, mapped by `a_to_b` into b's frame) and the
 /// axis-aligned box `b` grown by `margin` on every side may overlap: false only when one of the six
-/// face normals separates them. O(1).
+/// face normals separates them. O(1). Pure function: safe to call concurrently.
 inline bool boxes_may_overlap(const Eigen::AlignedBox3d& a, const Rigid_transform_3<double>& a_to_b,
                               const Eigen::AlignedBox3d& b, double margin)
 {
@@ -61,8 +61,11 @@ struct Traversal_counters {
 /// side is at most `b_stop_size` (b's descent stops there: below the margin's scale, smaller boxes
 /// hardly prune more but multiply the pairs; 0, the default, descends to b's leaves). Pairs come in
 /// depth-first order; the order is deterministic.
-/// Complexity: O(number of node pairs visited), at most O(|leaves a| |leaves b|); O(height) extra
-/// space.
+/// Complexity: O(number of node pairs visited); each node pair is visited at most once, so at most
+/// |nodes a| |nodes b| (also for degenerate boxes: flat, collinear or coincident points;
+/// test_bounded_work); O(height) extra space.
+/// Thread safety: reads the two hierarchies only; any number of traversals may run concurrently
+/// (`visit` is called on the calling thread).
 template <class Visitor>
 Traversal_counters for_each_overlapping_leaf_pair(const Point_cloud_hierarchy& a, const Point_cloud_hierarchy& b,
                                                   const Rigid_transform_3<double>& a_to_b, double margin,
