@@ -19,14 +19,6 @@
 
 namespace PCCD {
 
-/// A box of one hierarchy seen in the frame of another: centre, half extents and the rotation
-/// from its own frame.
-struct Oriented_box {
-    Eigen::Vector3d centre;
-    Eigen::Vector3d half;
-    Eigen::Matrix3d rotation;
-};
-
 /// Whether the box `a` (in the frame of a's hierarchy, mapped by `a_to_b` into b's frame) and the
 /// axis-aligned box `b` grown by `margin` on every side may overlap: false only when one of the six
 /// face normals separates them. O(1). Pure function: safe to call concurrently.
