@@ -19,6 +19,7 @@
 #include <nanoflann.hpp>
 
 #include <PCCD/Error.h>
+#include <PCCD/internal/finite.h>
 
 namespace PCCD {
 
@@ -127,8 +128,10 @@ public:
     /// The `k` nearest points to `query` (fewer if the tree holds fewer), sorted by
     /// (squared distance, index), written into `out` (cleared first). O(k log N) expected.
     /// Among points at the same distance the smaller indices win, so the answer is unique.
+    /// \throws Invalid_input if `query` has a NaN or infinite coordinate.
     void k_nearest(const Vector_3& query, std::size_t k, std::vector<Result>& out) const
     {
+        check_query(query);
         out.clear();
         k = std::min(k, size());
         if (k == 0) return;
@@ -147,6 +150,7 @@ public:
     }
 
     /// The nearest point to `query`. \pre the tree is not empty.
+    /// \throws Invalid_input if `query` has a NaN or infinite coordinate.
     Result nearest(const Vector_3& query) const
     {
         PCCD_precondition_msg(size() > 0, "nearest-point query on an empty kd-tree");
@@ -157,8 +161,10 @@ public:
 
     /// All points within distance `radius` of `query` (squared distance <= radius^2), sorted by
     /// (squared distance, index), written into `out` (cleared first).
+    /// \throws Invalid_input if `query` has a NaN or infinite coordinate.
     void within_radius(const Vector_3& query, FT radius, std::vector<Result>& out) const
     {
+        check_query(query);
         // A quiet comparison: `radius >= 0` would raise FE_INVALID (a trap in Debug test builds) on NaN.
         PCCD_precondition_msg(std::isgreaterequal(radius, FT(0)), "radius query with a negative or NaN radius");
         out.clear();
@@ -177,6 +183,15 @@ public:
     }
 
 private:
+    // Without this a NaN query point makes every distance comparison false: k_nearest then
+    // returned nothing (and nearest() read an empty vector) instead of failing clearly.
+    static void check_query(const Vector_3& query)
+    {
+        if (!internal::all_finite(query))
+            throw Invalid_input(internal::concat("kd-tree query at a non-finite point (", query.x(), ", ", query.y(), ", ",
+                                                 query.z(), ")"));
+    }
+
     struct Dataset {
         const Coordinates* coords;
         std::size_t kdtree_get_point_count() const { return static_cast<std::size_t>(coords->cols()); }

@@ -10,6 +10,7 @@
 #include <limits>
 #include <memory>
 #include <ranges>
+#include <type_traits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -68,6 +69,10 @@ public:
     {
     }
     /// @}
+
+    /// The largest coordinate magnitude accepted, sqrt(max(FT)) / 4 (about 3.3e153 for double,
+    /// 4.6e18 for float): beyond it squared distances could overflow.
+    static FT max_coordinate_magnitude() { return std::sqrt(std::numeric_limits<FT>::max()) / FT(4); }
 
     /// \name Access
     /// @{
@@ -149,17 +154,32 @@ private:
         return Bbox_3(Vector_3(c.rowwise().minCoeff()), Vector_3(c.rowwise().maxCoeff()));
     }
 
+    /// `value` as FT; a finite value beyond FT's range (a double cloud read into a float kernel)
+    /// is rejected instead of becoming infinite (the conversion would also raise FE_OVERFLOW).
+    template <class T>
+    static FT narrowed(const T& value, std::size_t point)
+    {
+        if constexpr (std::is_arithmetic_v<T> && (sizeof(T) > sizeof(FT))) {
+            if (std::isfinite(value) && std::isgreater(std::fabs(value), T(std::numeric_limits<FT>::max())))
+                throw Invalid_input(internal::concat("point ", point, " has a coordinate (", value,
+                                                     ") beyond the range of the kernel's ", sizeof(FT) == 4 ? "float" : "number type"));
+        }
+        return static_cast<FT>(value);
+    }
+
     template <class Range, class PointMap>
     static Coordinates to_coordinates(const Range& items, const PointMap& point_map)
     {
         std::vector<FT> flat;
         if constexpr (std::ranges::sized_range<Range>) flat.reserve(3 * std::ranges::size(items));
+        std::size_t point = 0;
         for (const auto& item : items) {
             const auto& p = get(point_map, item);
             using P = std::remove_cvref_t<decltype(p)>;
-            flat.push_back(static_cast<FT>(Point_traits<P>::x(p)));
-            flat.push_back(static_cast<FT>(Point_traits<P>::y(p)));
-            flat.push_back(static_cast<FT>(Point_traits<P>::z(p)));
+            flat.push_back(narrowed(Point_traits<P>::x(p), point));
+            flat.push_back(narrowed(Point_traits<P>::y(p), point));
+            flat.push_back(narrowed(Point_traits<P>::z(p), point));
+            ++point;
         }
         return Eigen::Map<const Coordinates>(flat.data(), 3, Eigen::Index(flat.size() / 3));
     }
@@ -175,6 +195,16 @@ private:
                     throw Invalid_input(internal::concat("point ", i, " has a non-finite coordinate (", c(0, i), ", ",
                                                          c(1, i), ", ", c(2, i), ")"));
         }
+        // Squared distances between points must not overflow FT (the kd-tree and every distance
+        // test use them): 3 (2 m)^2 < max for m = max_coordinate_magnitude().
+        const FT limit = max_coordinate_magnitude();
+        for (Eigen::Index i = 0; i < c.cols(); ++i)
+            for (Eigen::Index a = 0; a < 3; ++a)
+                if (std::isgreater(std::fabs(c(a, i)), limit))
+                    throw Invalid_input(internal::concat("point ", i, " has a coordinate (", c(a, i),
+                                                         ") beyond the supported magnitude ", limit,
+                                                         " (squared distances would overflow); rescale the cloud, e.g. with "
+                                                         "PCCD::normalize_to_unit_cube"));
         return c;
     }
 

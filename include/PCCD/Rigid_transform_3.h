@@ -96,9 +96,13 @@ public:
         if (translation.rows() != 3 || translation.cols() != 1)
             throw Invalid_input(internal::concat("rigid transform: the translation is ", translation.rows(), " x ",
                                                  translation.cols(), ", not 3 x 1"));
+        const auto r = rotation.derived().eval();
+        const auto t = translation.derived().eval();
         Matrix_3x4 m;
-        m.template leftCols<3>() = rotation.template cast<FT>();
-        m.col(3) = translation.template cast<FT>();
+        for (int i = 0; i < 3; ++i) {
+            for (int j = 0; j < 3; ++j) m(i, j) = narrowed(r.coeff(i, j), i, j);
+            m(i, 3) = narrowed(t.coeff(i, 0), i, 3);
+        }
         set_checked(m, tolerance);
     }
 
@@ -125,6 +129,23 @@ public:
 
     /// The identity.
     static Rigid_transform_3 identity() { return Rigid_transform_3(); }
+
+private:
+    /// Entry (i, j) of [R | t] as FT: a finite value of a wider type beyond FT's range (a double
+    /// given to a float transform) is rejected by name instead of turning into infinity.
+    template <class T>
+    static FT narrowed(const T& value, int i, int j)
+    {
+        if constexpr (std::is_arithmetic_v<T> && (sizeof(T) > sizeof(FT))) {
+            if (std::isfinite(value) && std::isgreater(std::fabs(value), T(std::numeric_limits<FT>::max())))
+                throw Invalid_input(internal::concat("rigid transform: ", j == 3 ? "translation" : "rotation",
+                                                     " entry (", i, ", ", j, ") = ", value, " is beyond the range of ",
+                                                     sizeof(FT) == 4 ? "float" : "the number type"));
+        }
+        return static_cast<FT>(value);
+    }
+
+public:
     /// @}
 
     /// \name Access

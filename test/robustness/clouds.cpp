@@ -290,62 +290,65 @@ TEST_CASE("clouds: far-apart pieces, isolated points and duplicated points", "[r
     }
 }
 
-// --- Known bugs ----------------------------------------------------------------------------------
-// Hidden test cases (tag [.]: not run by ctest) reproducing library bugs found by this catalogue;
-// each asserts the intended outcome, so it passes once fixed and can then lose its [.] tag. In the
-// Debug test build (floating-point traps) each one dies of SIGFPE; see doc/reliability.md.
+// --- Former known bugs -----------------------------------------------------------------------------
+// Found by this catalogue (doc/reliability.md); each died of SIGFPE in the Debug test build and gave
+// a wrong or misleading answer in Release. Fixed in Point_cloud (magnitude and narrowing checks),
+// the graph construction (extent check) and Kd_tree (query check).
 
-TEST_CASE("known bug: edge lengths beyond FLT_MAX (coordinates near 1e150)", "[.][known-bug]")
+TEST_CASE("coordinates near 1e150: graph edge lengths would overflow float", "[robustness]")
 {
-    // Graph edge lengths and CPSP distances are floats: float(length) overflows (a trap in Debug);
-    // in Release every length is +inf and no normal is determined.
+    // Was: float(length) overflowed (a trap in Debug); in Release every length was +inf and no
+    // normal was determined.
     Points points;
     for (const auto& p : fibonacci_sphere(300)) points.push_back(1e150 * p);
-    try {
-        const Object object(points);
-        CHECK(object.orientation().unoriented == 0);
-    } catch (const PCCD::Invalid_input&) {
-        SUCCEED("rejected clearly");
-    }
+    require_invalid_input([&] { Object object(points); }, {"extent", "float", "rescale"});
+    // The cloud itself (kd-tree, squared distances in double) is still fine at this scale.
+    CHECK(Cloud(points).size() == 300);
 }
 
-TEST_CASE("known bug: squared distances beyond DBL_MAX (coordinates near 1e300)", "[.][known-bug]")
+TEST_CASE("coordinates near 1e300: squared distances would overflow double", "[robustness]")
 {
-    // The kd-tree's squared distances overflow (a trap in Debug); in Release the object is
-    // rejected, but with the misleading message "the sampling radius is 0".
+    // Was: the kd-tree's squared distances overflowed (a trap in Debug); in Release the object was
+    // rejected with the misleading message "the sampling radius is 0".
     Points points;
     for (const auto& p : fibonacci_sphere(300)) points.push_back(1e300 * p);
-    require_invalid_input([&] { Object object(points); }, {"coordinate"});
+    require_invalid_input([&] { Object object(points); }, {"coordinate", "magnitude"});
+    require_invalid_input([&] { Cloud cloud(points); }, {"coordinate", "magnitude"});
+    // Just inside the limit is accepted.
+    const double limit = Cloud::max_coordinate_magnitude();
+    CHECK(Cloud(Points{{0, 0, 0}, {limit, -limit, limit}}).size() == 2);
+    require_invalid_input([&] { Cloud cloud(Points{{0, 0, 0}, {std::nextafter(limit, 2 * limit), 0, 0}}); },
+                          {"point 1", "magnitude"});
 }
 
-TEST_CASE("known bug: a float cloud from doubles beyond FLT_MAX", "[.][known-bug]")
+TEST_CASE("a float cloud from doubles beyond FLT_MAX is rejected by point", "[robustness]")
 {
-    // static_cast<float>(1e39) traps in Debug; in Release the message calls the point non-finite.
+    // Was: static_cast<float>(1e39) trapped in Debug; in Release the message called the point non-finite.
     require_invalid_input([] { PCCD::Point_cloud<PCCD::Eigen_kernel<float>> cloud(Points{{0, 0, 0}, {1e39, 0, 0}}); },
                           {"point 1", "float"});
 }
 
-TEST_CASE("known bug: a float object near 1e30", "[.][known-bug]")
+TEST_CASE("a float object near 1e30 is rejected with the reason", "[robustness]")
 {
-    // Squared distances overflow float in the kd-tree (a trap in Debug); in Release: "the sampling
-    // radius is 0".
+    // Was: squared distances overflowed float in the kd-tree (a trap in Debug); in Release: "the
+    // sampling radius is 0".
     Points points;
     for (const auto& p : fibonacci_sphere(300)) points.push_back(1e30 * p);
-    try {
-        const PCCD::Point_cloud_object<PCCD::Eigen_kernel<float>> object(points);
-        CHECK(object.orientation().unoriented == 0);
-    } catch (const PCCD::Invalid_input& e) {
-        CHECK_THAT(std::string(e.what()), !Catch::Contains("sampling radius is 0"));
-    }
+    require_invalid_input([&] { const PCCD::Point_cloud_object<PCCD::Eigen_kernel<float>> object(points); },
+                          {"coordinate", "magnitude"});
 }
 
-TEST_CASE("known bug: queries at a NaN point", "[.][known-bug]")
+TEST_CASE("queries at a NaN or infinite point are rejected", "[robustness]")
 {
-    // nanoflann computes with the NaN (a trap in Debug). In Release k_nearest returns nothing, so
-    // nearest() reads front() of an empty vector, and evaluate() reports "degenerate".
+    // Was a known bug: nanoflann compared with the NaN (a trap in Debug), k_nearest returned
+    // nothing and nearest() read front() of an empty vector. The kd-tree now checks the query.
     const Cloud cloud(fibonacci_sphere(100));
-    const Eigen::Vector3d nan_point(std::numeric_limits<double>::quiet_NaN(), 0, 0);
-    CHECK_THROWS_AS(cloud.nearest(nan_point), PCCD::Error);
     const Object object(fibonacci_sphere(300));
-    CHECK_THROWS_AS(object.surface().evaluate(nan_point), PCCD::Error);
+    for (const double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+        const Eigen::Vector3d point(bad, 0, 0);
+        require_invalid_input([&] { (void)cloud.nearest(point); }, {"non-finite"});
+        require_invalid_input([&] { (void)cloud.k_nearest(point, 3); }, {"non-finite"});
+        require_invalid_input([&] { (void)cloud.within_radius(point, 0.1); }, {"non-finite"});
+        CHECK_THROWS_AS(object.surface().evaluate(point), PCCD::Error);
+    }
 }

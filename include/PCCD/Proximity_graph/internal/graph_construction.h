@@ -110,9 +110,22 @@ struct Distinct_positions {
     bool has_duplicates() const { return own_tree != nullptr; }
 };
 
+/// Graph edge lengths (and CPSP distances) are stored as float: a cloud whose bounding box
+/// diagonal exceeds float's range would give infinite lengths and no usable geometry.
+template <class K>
+void check_extent_fits_float(const Point_cloud<K>& cloud)
+{
+    const double diagonal = (cloud.bbox().max() - cloud.bbox().min()).template cast<double>().norm();
+    if (std::isgreater(diagonal, double(std::numeric_limits<float>::max()) / 4.0))
+        throw Invalid_input(concat("proximity graph: the cloud's extent (bounding box diagonal ", diagonal,
+                                   ") is beyond the float range of edge lengths; rescale the cloud, e.g. with "
+                                   "PCCD::normalize_to_unit_cube"));
+}
+
 template <class K>
 Distinct_positions<typename K::FT> find_distinct_positions(const Point_cloud<K>& cloud)
 {
+    check_extent_fits_float(cloud);
     using FT = typename K::FT;
     const auto& c = cloud.coordinates();
     const auto n = static_cast<std::uint32_t>(cloud.size());
