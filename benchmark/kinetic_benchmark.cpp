@@ -7,15 +7,23 @@
 // (kinetic: Kinetic_statistics::node_updates; baselines: every node, as bv_updates).
 //
 //   kinetic_benchmark [--sizes 1684,6891,15503] [--rates 30,60,120] [--repeats 5] [--csv FILE]
+//                     [--rays 64]
 //
 // Besides the three methods it also runs, at every size and rate, the kinetic tree with a 4-ary
-// event heap (method "kinetic_4ary_heap", for the choice of Event_queue's arity) and, at 30 Hz,
-// all three methods with the cloth's self-overlap added to the queries ("+self" methods).
+// event heap (method "kinetic_4ary_heap", for the choice of Event_queue's arity), at the first
+// rate all three methods with the cloth's self-overlap added to the queries ("+self" methods), and
+// at every rate all three methods answering only ray casts instead of the table overlap ("+rays"
+// methods: no overlap query, --rays first-hit rays per frame, the same fixed rays for every method
+// and frame; see Kinetic_run_options::rays_per_frame). The overlap of the cloth lying on the table
+// visits nearly the whole tree, the kinetic tree's worst case (it assembles node boxes lazily at
+// query time); a ray touches only the nodes along its path. For "+rays" rows, queries counts rays
+// (rays per frame x frames); --rays 0 leaves these rows out.
 #include <PCCD/Kinetic/Scenes/Cloth_scene.h>
 #include <PCCD/Kinetic/Scenes/run_kinetic_scene.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cstddef>
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
@@ -46,6 +54,7 @@ int main(int argc, char** argv)
 {
     std::vector<double> sizes{1684, 6891, 15503}, rates{30, 60, 120};
     int repeats = 5;
+    std::size_t rays = 64;
     std::string csv_file = "kinetic_benchmark.csv";
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string key = argv[i], value = argv[i + 1];
@@ -57,6 +66,8 @@ int main(int argc, char** argv)
             repeats = std::max(1, std::stoi(value));
         else if (key == "--csv")
             csv_file = value;
+        else if (key == "--rays")
+            rays = std::size_t(std::stoul(value));
         else {
             std::cerr << "unknown option " << key << '\n';
             return 1;
@@ -78,18 +89,24 @@ int main(int argc, char** argv)
             PCCD::Kinetic_method method;
             bool four_ary_heap;
             bool self;
+            bool rays;
         };
         for (const double rate : rates) {
-            std::vector<Variant> variants{{"kinetic", PCCD::Kinetic_method::kinetic, false, false},
-                                          {"bottom_up", PCCD::Kinetic_method::bottom_up, false, false},
-                                          {"rebuild", PCCD::Kinetic_method::rebuild, false, false},
-                                          {"kinetic_4ary_heap", PCCD::Kinetic_method::kinetic, true, false}};
+            std::vector<Variant> variants{{"kinetic", PCCD::Kinetic_method::kinetic, false, false, false},
+                                          {"bottom_up", PCCD::Kinetic_method::bottom_up, false, false, false},
+                                          {"rebuild", PCCD::Kinetic_method::rebuild, false, false, false},
+                                          {"kinetic_4ary_heap", PCCD::Kinetic_method::kinetic, true, false, false}};
+            constexpr PCCD::Kinetic_method methods[] = {PCCD::Kinetic_method::kinetic, PCCD::Kinetic_method::bottom_up,
+                                                        PCCD::Kinetic_method::rebuild};
             if (rate == rates.front())
-                for (const auto m : {PCCD::Kinetic_method::kinetic, PCCD::Kinetic_method::bottom_up,
-                                     PCCD::Kinetic_method::rebuild})
-                    variants.push_back({PCCD::to_string(m) + "+self", m, false, true});
+                for (const auto m : methods) variants.push_back({PCCD::to_string(m) + "+self", m, false, true, false});
+            if (rays > 0)
+                for (const auto m : methods) variants.push_back({PCCD::to_string(m) + "+rays", m, false, false, true});
             for (const Variant& v : variants) {
-                const PCCD::Kinetic_run_options options{.query_hz = rate, .self_overlap_query = v.self};
+                const PCCD::Kinetic_run_options options{.query_hz = rate,
+                                                        .overlap_query = !v.rays,
+                                                        .self_overlap_query = v.self,
+                                                        .rays_per_frame = v.rays ? rays : 0};
                 std::vector<double> times, updates, queries, cpu_times, cpu_updates, cpu_queries;
                 PCCD::Kinetic_run_result first;
                 for (int r = 0; r < repeats; ++r) {

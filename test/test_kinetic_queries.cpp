@@ -1,12 +1,14 @@
 // Queries on kinetic and refit trees (issue: kinetic AABB tree, items 3 and 4): box overlap of two
 // trees, self-overlap without adjacent primitives, first ray hit on triangles and box range queries
 // at random times equal brute force over all primitives, for the kinetic tree and both baselines;
-// the traversal hook visits the same leaf pairs; point clouds with a proximity margin.
+// the traversal hook visits the same leaf pairs; point clouds with a proximity margin; the ray
+// casts of run_kinetic_scene give the same hits with every method.
 #include <PCCD/Kinetic/Kinetic_AABB_tree.h>
 #include <PCCD/Kinetic/Refit_AABB_tree.h>
 #include <PCCD/Kinetic/Scenes/Cloth_scene.h>
 #include <PCCD/Kinetic/Scenes/Deforming_cloud_scene.h>
 #include <PCCD/Kinetic/Scenes/Random_motion_scene.h>
+#include <PCCD/Kinetic/Scenes/run_kinetic_scene.h>
 #include <PCCD/Random.h>
 
 #include <catch2/catch.hpp>
@@ -97,7 +99,9 @@ void check_cloth_queries(TreeA& kinetic, TreeB& refit, TreeC& rebuild, const PCC
         CHECK(sorted(got) == expected_self);
         total_self += expected_self.size();
 
-        // Rays from above and from the side towards the cloth.
+        // Rays from above and from the side towards the cloth; afterwards the same rays as one batch.
+        std::vector<PCCD::Kinetic_ray> batch;
+        std::vector<std::optional<PCCD::Kinetic_ray_hit>> truths;
         for (int r = 0; r < 20; ++r) {
             PCCD::Kinetic_ray ray;
             ray.origin = Eigen::Vector3d(PCCD::uniform_real(rng, -1.2, 1.2), PCCD::uniform_real(rng, -1.2, 1.2), 1.0);
@@ -122,6 +126,22 @@ void check_cloth_queries(TreeA& kinetic, TreeB& refit, TreeC& rebuild, const PCC
                 }
             }
             hits += truth.has_value();
+            batch.push_back(ray);
+            truths.push_back(truth);
+        }
+        std::vector<std::optional<PCCD::Kinetic_ray_hit>> batch_hits;
+        for (int method = 0; method < 3; ++method) {
+            if (method == 0) kinetic.first_hits(batch, batch_hits);
+            if (method == 1) refit.first_hits(batch, batch_hits);
+            if (method == 2) rebuild.first_hits(batch, batch_hits);
+            REQUIRE(batch_hits.size() == batch.size());
+            for (std::size_t r = 0; r < batch.size(); ++r) {
+                REQUIRE(batch_hits[r].has_value() == truths[r].has_value());
+                if (truths[r]) {
+                    CHECK(batch_hits[r]->primitive == truths[r]->primitive);
+                    CHECK(batch_hits[r]->s == truths[r]->s);
+                }
+            }
         }
 
         // Range queries.
@@ -291,4 +311,34 @@ TEST_CASE("concurrent queries on one tree give the answers of sequential ones", 
         CHECK(results[2] == overlap);
         CHECK(results[3] == overlap);
     }
+}
+
+TEST_CASE("run_kinetic_scene: ray casts hit the same triangles with every method", "[kinetic][query]")
+{
+    const auto scene = PCCD::make_cloth_scene({.triangles = 200, .duration = 0.5});
+    const PCCD::Kinetic_run_options options{.overlap_query = false, .rays_per_frame = 16};
+    const auto kinetic = PCCD::run_kinetic_scene(scene, PCCD::Kinetic_method::kinetic, options);
+    const auto bottom_up = PCCD::run_kinetic_scene(scene, PCCD::Kinetic_method::bottom_up, options);
+    const auto rebuild = PCCD::run_kinetic_scene(scene, PCCD::Kinetic_method::rebuild, options);
+    REQUIRE(kinetic.frames > 0);
+    CHECK(kinetic.queries == kinetic.frames * 16);
+    CHECK(bottom_up.queries == kinetic.queries);
+    CHECK(rebuild.queries == kinetic.queries);
+    CHECK(bottom_up.reported == kinetic.reported);
+    CHECK(rebuild.reported == kinetic.reported);
+    CHECK(kinetic.reported > 0);              // the rays hit the cloth sometimes...
+    CHECK(kinetic.reported < kinetic.queries); // ... and miss it sometimes
+    // The rays are fixed for a run: playing again gives the same hits.
+    CHECK(PCCD::run_kinetic_scene(scene, PCCD::Kinetic_method::kinetic, options).reported == kinetic.reported);
+}
+
+TEST_CASE("run_kinetic_scene: ray casts on a point scene are rejected", "[kinetic][query]")
+{
+    const auto scene = PCCD::make_random_motion_scene({.points = 20, .duration = 0.2});
+    CHECK_THROWS_AS(PCCD::run_kinetic_scene(scene, PCCD::Kinetic_method::kinetic, {.rays_per_frame = 4}),
+                    PCCD::Invalid_input);
+    CHECK_THROWS_AS(PCCD::run_kinetic_scene(scene, PCCD::Kinetic_method::bottom_up,
+                                            {.overlap_query = false, .rays_per_frame = 1}),
+                    PCCD::Invalid_input);
+    CHECK_NOTHROW(PCCD::run_kinetic_scene(scene, PCCD::Kinetic_method::kinetic, {.rays_per_frame = 0}));
 }

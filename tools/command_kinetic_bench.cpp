@@ -1,8 +1,12 @@
 // pccd kinetic-bench: plays a recorded scene (cloth falling on a table, deforming point cloud or
 // random linear motion) with the kinetic AABB tree, bottom-up refit and full rebuild at one query
 // rate, and prints BV updates, events and time per frame of each (ALGORITHMS.md section 7).
+// The queries per frame: the overlap with the scene's obstacle (the table; a range query for the
+// point scenes) unless --no-overlap, plus --rays N first-hit ray casts (cloth only; fixed rays, the
+// same for every method, see PCCD::Kinetic_run_options::rays_per_frame).
 #include "commands.h"
 
+#include <PCCD/Error.h>
 #include <PCCD/Kinetic/Scenes/Cloth_scene.h>
 #include <PCCD/Kinetic/Scenes/Deforming_cloud_scene.h>
 #include <PCCD/Kinetic/Scenes/Random_motion_scene.h>
@@ -25,19 +29,23 @@ struct Kinetic_bench_args {
     std::size_t size = 1684;
     std::size_t frames = 0;
     double query_hz = 30.0;
+    std::size_t rays = 0;
+    bool no_overlap = false;
     bool json = false;
 };
 
 template <class P>
 void run_and_print(const PCCD::Kinetic_scene<P>& scene, const Kinetic_bench_args& args)
 {
-    const PCCD::Kinetic_run_options options{.query_hz = args.query_hz};
+    const PCCD::Kinetic_run_options options{
+        .query_hz = args.query_hz, .overlap_query = !args.no_overlap, .rays_per_frame = args.rays};
     nlohmann::json out;
     out["scene"] = scene.name;
     out["primitives"] = scene.primitives.size();
     out["vertices"] = scene.flightplans.size();
     out["duration_s"] = scene.end_time - scene.start_time;
     out["query_hz"] = args.query_hz;
+    out["rays_per_frame"] = args.rays;
     for (const auto method : {PCCD::Kinetic_method::kinetic, PCCD::Kinetic_method::bottom_up,
                               PCCD::Kinetic_method::rebuild}) {
         const auto r = PCCD::run_kinetic_scene(scene, method, options);
@@ -97,8 +105,15 @@ void register_kinetic_bench(CLI::App& app)
     cmd->add_option("--query-hz", args->query_hz, "query frames per second of animation time")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
+    cmd->add_option("--rays", args->rays, "add N first-hit ray casts per frame to the queries (cloth only)")
+        ->capture_default_str();
+    cmd->add_flag("--no-overlap", args->no_overlap, "skip the overlap query (the table; range query for points)");
     cmd->add_flag("--json", args->json, "print JSON");
     cmd->callback([args]() {
+        if (args->rays > 0 && args->scene != "cloth")
+            throw PCCD::Invalid_input("kinetic-bench: --rays " + std::to_string(args->rays) +
+                                      " needs a scene of triangles (--scene cloth); scene " + args->scene +
+                                      " has points, which rays cannot hit");
         const bool custom_length = args->frames > 0;
         const double duration = custom_length ? double(args->frames) / args->query_hz : 0.0;
         if (args->scene == "cloth") {

@@ -131,8 +131,11 @@ TEST_CASE("files: header oddities", "[robustness]")
                        {"bad header"});
     require_file_error(make_file("bom.off", bom + "OFF\n2 0 0\n" + body), [] { PCCD::IO::read_points(path_of("bom.off")); },
                        {"bad header"});
-    // The format version is not checked: a "2.0" file in the 1.0 layout reads.
-    CHECK(PCCD::IO::read_points(make_file("version2.ply", "ply\nformat ascii 2.0\nelement vertex 2\n" + xyz_properties +
+    // Only format version 1.0 is known (was: not checked, a "2.0" file read as 1.0).
+    require_file_error(make_file("version2.ply", "ply\nformat ascii 2.0\nelement vertex 2\n" + xyz_properties +
+                                                     "end_header\n" + body),
+                       [] { PCCD::IO::read_points(path_of("version2.ply")); }, {"bad header", "version", "2.0"});
+    CHECK(PCCD::IO::read_points(make_file("version1.ply", "ply\nformat ascii 1\nelement vertex 2\n" + xyz_properties +
                                                               "end_header\n" + body))
               .points.size() == 2);
     require_file_error(make_file("two_vertex_elements.ply", "ply\nformat ascii 1.0\nelement vertex 1\n" + xyz_properties +

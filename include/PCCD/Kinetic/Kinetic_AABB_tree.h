@@ -21,6 +21,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -380,6 +381,17 @@ public:
         requires(P::vertex_count == 3)
     {
         return internal::first_hit(Query_view(*this), ray);
+    }
+    /// The first hits of several rays at now(), written into `out` (cleared first; one entry per
+    /// ray, in order). Equal to first_hit() per ray, but the rays share one query's memo, so a
+    /// node box near the root is assembled once for all of them instead of once per ray.
+    void first_hits(std::span<const Kinetic_ray> rays, std::vector<std::optional<Kinetic_ray_hit>>& out) const
+        requires(P::vertex_count == 3)
+    {
+        out.clear();
+        out.reserve(rays.size());
+        const Query_view view(*this);
+        for (const Kinetic_ray& ray : rays) out.push_back(internal::first_hit(view, ray));
     }
     /// Simultaneous traversal with `other`: `descend(node_a, node_b, box_a, box_b) -> bool` opens a
     /// node pair, `on_leaf_pair(node_a, node_b)` receives the leaf pairs it lets through. This is

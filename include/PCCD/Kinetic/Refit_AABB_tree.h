@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <optional>
 #include <utility>
+#include <span>
 #include <vector>
 
 #include <Eigen/Core>
@@ -173,6 +174,14 @@ public:
         requires(P::vertex_count == 3)
     {
         return internal::first_hit(*this, ray);
+    }
+    /// As Kinetic_AABB_tree::first_hits: first_hit() of every ray, in order.
+    void first_hits(std::span<const Kinetic_ray> rays, std::vector<std::optional<Kinetic_ray_hit>>& out) const
+        requires(P::vertex_count == 3)
+    {
+        out.clear();
+        out.reserve(rays.size());
+        for (const Kinetic_ray& ray : rays) out.push_back(internal::first_hit(*this, ray));
     }
     template <class Tree, class Descend, class OnLeafPair>
     void traverse(const Tree& other, Descend&& descend, OnLeafPair&& on_leaf_pair) const

@@ -839,6 +839,9 @@ inline Ply_summary check_ply(const std::string& path, std::string_view text, boo
     } else {
         fail(path, concat("bad header: unknown PLY format ", quote_token(tokens[1]), " on line 2"));
     }
+    // 1.0 is the only PLY version there is; a reader cannot know the layout of any other.
+    if (tokens[2] != "1.0" && tokens[2] != "1")
+        fail(path, concat("bad header: PLY format version ", quote_token(tokens[2]), " on line 2, this reader knows 1.0"));
 
     std::vector<Ply_element> elements;
     bool ended = false;

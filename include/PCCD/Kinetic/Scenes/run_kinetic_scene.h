@@ -2,6 +2,12 @@
 // strategies of ALGORITHMS.md section 7 (kinetic events, bottom-up refit, full rebuild), answering
 // queries at a fixed rate, and reports the counters and timings the talk compares. Used by
 // benchmark/kinetic_benchmark.cpp and `pccd kinetic-bench`; usable on any recorded Kinetic_scene.
+//
+// The queries of a frame (Kinetic_run_options): the overlap with the scene's obstacle (or a range
+// query without one), optionally the self-overlap, and optionally `rays_per_frame` first-hit ray
+// casts (triangle scenes only). The overlap of the cloth lying on the table visits nearly the whole
+// tree, the worst case for the kinetic tree, which assembles node boxes lazily at query time; a ray
+// opens only the nodes along its path, a query touching a small part of the tree.
 #pragma once
 
 #include <algorithm>
@@ -10,6 +16,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <ctime>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,6 +25,7 @@
 #include <Eigen/Geometry>
 
 #include <PCCD/Error.h>
+#include <PCCD/Random.h>
 #include <PCCD/Kinetic/Event_queue.h>
 #include <PCCD/Kinetic/Kinetic_AABB_tree.h>
 #include <PCCD/Kinetic/Refit_AABB_tree.h>
@@ -42,6 +50,13 @@ struct Kinetic_run_options {
     bool overlap_query = true;
     /// Per frame, also the self-overlap of the scene's primitives (non-adjacent pairs); default false.
     bool self_overlap_query = false;
+    /// Per frame, also that many first-hit ray casts (`first_hit`, triangle scenes only); default 0.
+    /// The rays are drawn once per run from a fixed seed, so they are the same in every frame and
+    /// for every method: origins uniform on the sphere around the centre of the scene's initial
+    /// bounding box whose radius is the box's diagonal, each aimed at a uniform point inside the
+    /// box (direction = target - origin, not normalised; s in [0, inf); radius 1 if the box is a
+    /// point). Each ray counts as one query; each ray that hits adds 1 to `reported`.
+    std::size_t rays_per_frame = 0;
 };
 
 /// What a run measured. Counts are deterministic; times are wall-clock on the calling thread.
@@ -55,7 +70,7 @@ struct Kinetic_run_result {
     std::uint64_t events = 0;                   ///< kinetic only: certificate failures processed
     std::uint64_t certificate_computations = 0; ///< kinetic only, after construction
     std::uint64_t queries = 0;                  ///< queries answered
-    std::uint64_t reported = 0;                 ///< pairs or primitives reported by all queries (a checksum)
+    std::uint64_t reported = 0;                 ///< pairs, primitives, ray hits reported (a checksum)
     double build_ms = 0.0;                      ///< construction (kinetic: including all first certificates)
     double update_ms_per_frame = 0.0;           ///< mean time of advance_to per frame
     double query_ms_per_frame = 0.0;            ///< mean time of the queries per frame
@@ -69,9 +84,34 @@ struct Kinetic_run_result {
 
 namespace internal {
 
+/// The rays of Kinetic_run_options::rays_per_frame around `bounds` (see there); deterministic.
+inline std::vector<Kinetic_ray> kinetic_run_rays(const Eigen::AlignedBox3d& bounds, std::size_t count)
+{
+    std::vector<Kinetic_ray> rays;
+    if (count == 0) return rays;
+    const bool empty = bounds.isEmpty();
+    const Eigen::Vector3d center = empty ? Eigen::Vector3d::Zero() : Eigen::Vector3d(bounds.center());
+    const Eigen::Vector3d sizes = empty ? Eigen::Vector3d::Zero() : Eigen::Vector3d(bounds.sizes());
+    double radius = sizes.norm();
+    if (!(radius > 0.0)) radius = 1.0; // a single point: any sphere around it will do
+    Random_engine rng(0x5eed'4a75'2024'0001ULL);
+    rays.reserve(count);
+    while (rays.size() < count) {
+        const Eigen::Vector3d g(standard_normal(rng), standard_normal(rng), standard_normal(rng));
+        const double norm = g.norm();
+        if (!(norm > 1e-12)) continue; // practically never; keeps the direction on the sphere defined
+        const Eigen::Vector3d origin = center + radius * g / norm;
+        const Eigen::Vector3d target =
+            center + Eigen::Vector3d(uniform_01(rng) - 0.5, uniform_01(rng) - 0.5, uniform_01(rng) - 0.5)
+                         .cwiseProduct(sizes);
+        rays.push_back({.origin = origin, .direction = target - origin});
+    }
+    return rays;
+}
+
 template <class Tree, class Obstacle>
 void answer_queries(const Tree& tree, const Obstacle& obstacle, bool has_obstacle, const Eigen::AlignedBox3d& range,
-                    const Kinetic_run_options& o, Kinetic_run_result& r,
+                    const std::vector<Kinetic_ray>& rays, const Kinetic_run_options& o, Kinetic_run_result& r,
                     std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs, std::vector<std::uint32_t>& hits)
 {
     if (o.overlap_query) {
@@ -89,6 +129,16 @@ void answer_queries(const Tree& tree, const Obstacle& obstacle, bool has_obstacl
         r.reported += pairs.size();
         ++r.queries;
     }
+    if constexpr (requires(const Kinetic_ray& ray) { tree.first_hit(ray); }) {
+        if (!rays.empty()) {
+            // One batch per frame: the kinetic tree assembles each node box once for all rays.
+            std::vector<std::optional<Kinetic_ray_hit>> ray_hits;
+            tree.first_hits(rays, ray_hits);
+            for (const auto& hit : ray_hits)
+                if (hit) ++r.reported;
+            r.queries += rays.size();
+        }
+    }
 }
 
 } // namespace internal
@@ -96,13 +146,20 @@ void answer_queries(const Tree& tree, const Obstacle& obstacle, bool has_obstacl
 /// Plays `scene` from start_time to end_time with `method`, advancing to every query frame
 /// (start + k / query_hz, k >= 1) and answering the queries of `options` there.
 /// \tparam P the scene's KineticPrimitive; \tparam Queue the kinetic tree's event queue.
-/// \throws Invalid_input if query_hz is not positive.
+/// \throws Invalid_input if query_hz is not positive, or if rays_per_frame > 0 and P is not a
+/// triangle (ray casting is defined on triangles only).
 template <class P, class Queue = Event_queue<>>
 Kinetic_run_result run_kinetic_scene(const Kinetic_scene<P>& scene, Kinetic_method method,
                                      const Kinetic_run_options& options = {})
 {
     if (!std::isgreater(options.query_hz, 0.0))
         throw Invalid_input(internal::concat("run_kinetic_scene: query_hz ", options.query_hz, " must be > 0"));
+    if constexpr (P::vertex_count != 3)
+        if (options.rays_per_frame > 0)
+            throw Invalid_input(internal::concat("run_kinetic_scene: rays_per_frame ", options.rays_per_frame,
+                                                 " needs a scene of triangles (ray casting hits triangles only); "
+                                                 "scene '", scene.name, "' has primitives of ", P::vertex_count,
+                                                 " vertices"));
     using Clock = std::chrono::steady_clock;
     using F = Piecewise_linear_flightplan;
     Kinetic_run_result r;
@@ -114,6 +171,7 @@ Kinetic_run_result run_kinetic_scene(const Kinetic_scene<P>& scene, Kinetic_meth
     const Eigen::AlignedBox3d range(bounds.center() - 0.25 * bounds.sizes(), bounds.center() + 0.25 * bounds.sizes());
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
     std::vector<std::uint32_t> hits;
+    const std::vector<Kinetic_ray> rays = internal::kinetic_run_rays(bounds, options.rays_per_frame);
 
     auto play = [&](auto& tree) {
         double update = 0.0, query = 0.0;
@@ -127,7 +185,7 @@ Kinetic_run_result run_kinetic_scene(const Kinetic_scene<P>& scene, Kinetic_meth
             obstacle.advance_to(t);
             const auto t1 = Clock::now();
             const std::clock_t c1 = std::clock();
-            internal::answer_queries(tree, obstacle, has_obstacle, range, options, r, pairs, hits);
+            internal::answer_queries(tree, obstacle, has_obstacle, range, rays, options, r, pairs, hits);
             const auto t2 = Clock::now();
             const std::clock_t c2 = std::clock();
             update += std::chrono::duration<double, std::milli>(t1 - t0).count();
