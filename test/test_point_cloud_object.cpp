@@ -84,3 +84,27 @@ TEST_CASE("a saved point cloud object loads back identical", "[surface]")
     CHECK_THROWS_AS(PCCD::Point_cloud_object<>::load(std::string(PCCD_TEST_TMP_DIR) + "/missing.pccdobj"),
                     PCCD::File_error);
 }
+
+TEST_CASE("a point cloud object from a point file's data uses its normals when it has them", "[surface]")
+{
+    const auto sample = sample_shape(unit_sphere(), 1500, 0.0, 97);
+    PCCD::Point_data data;
+    data.points = columns(sample.points);
+    // Without normals: the same object as from the points alone (normals propagated).
+    const PCCD::Point_cloud_object<> from_points(data.points);
+    const PCCD::Point_cloud_object<> from_data(data);
+    CHECK_FALSE(from_data.normals_given());
+    CHECK(from_data.normals() == from_points.normals());
+    // With normals pointing inwards (a file whose normals point into the sphere): every normal of the
+    // object takes that sign, the opposite of the propagated (outward) orientation.
+    for (const Eigen::Vector3d& p : data.points) data.normals.push_back(-2.0 * p);
+    const PCCD::Point_cloud_object<> oriented(data);
+    CHECK(oriented.normals_given());
+    std::size_t inward = 0;
+    for (Eigen::Index i = 0; i < oriented.normals().cols(); ++i)
+        inward += oriented.normals().col(i).dot(data.points[std::size_t(i)]) < 0.0;
+    CHECK(inward == data.points.size());
+    // Normals, but not one per point.
+    data.normals.pop_back();
+    CHECK_THROWS_AS(PCCD::Point_cloud_object<>(data), PCCD::Invalid_input);
+}

@@ -19,12 +19,6 @@
 namespace pccd_tool {
 namespace {
 
-/// Readable property map from an index to a row of a table (points or normals of the file).
-struct Table_map {
-    const std::vector<Eigen::Vector3d>* table;
-    friend const Eigen::Vector3d& get(const Table_map& m, std::size_t i) { return (*m.table)[i]; }
-};
-
 Eigen::Vector3d parse_point(const std::string& text)
 {
     std::istringstream in(text);
@@ -87,11 +81,7 @@ void register_eval(CLI::App& app)
         std::vector<Eigen::Vector3d> points;
         for (const std::string& text : *at) points.push_back(parse_point(text));
         const PCCD::Point_data data = PCCD::IO::read_points(*file);
-        std::vector<std::size_t> items(data.points.size());
-        for (std::size_t i = 0; i < items.size(); ++i) items[i] = i;
-        const PCCD::Point_cloud_object<> object =
-            data.has_normals() ? PCCD::Point_cloud_object<>(items, Table_map{&data.points}, Table_map{&data.normals})
-                               : PCCD::Point_cloud_object<>(data.points);
+        const PCCD::Point_cloud_object<> object(data); // normals, when the file has them, orient the object's
         nlohmann::json result;
         result["file"] = *file;
         result["kernel"] = *kernel;

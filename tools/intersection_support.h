@@ -35,10 +35,7 @@ inline const std::vector<std::string>& method_names()
 }
 
 /// Points (and normals, when given) ready for preprocessing.
-struct Object_points {
-    std::vector<Eigen::Vector3d> points;
-    std::vector<Eigen::Vector3d> normals;
-};
+using Object_points = PCCD::Point_data;
 
 /// Centres and scales `points` into [-1, 1]^3 in place (normals keep their direction: the
 /// similarity has no rotation and a positive scale).
@@ -63,24 +60,12 @@ struct Prepared_object {
     double preprocess_ms;
 };
 
-/// Readable property map from an index to a row of a table (points or normals).
-struct Table_map {
-    const std::vector<Eigen::Vector3d>* table;
-    friend const Eigen::Vector3d& get(const Table_map& m, std::size_t i) { return (*m.table)[i]; }
-};
-
 /// Preprocesses the points with Point_cloud_object's defaults; normals, when present, orient the
 /// object's normals (as `pccd eval` does).
 inline Prepared_object prepare_object(const Object_points& input)
 {
     const Clock::time_point start = Clock::now();
-    if (input.normals.empty()) {
-        PCCD::Point_cloud_object<> object(input.points);
-        return {std::move(object), ms_since(start)};
-    }
-    std::vector<std::size_t> items(input.points.size());
-    for (std::size_t i = 0; i < items.size(); ++i) items[i] = i;
-    PCCD::Point_cloud_object<> object(items, Table_map{&input.points}, Table_map{&input.normals});
+    PCCD::Point_cloud_object<> object(input);
     return {std::move(object), ms_since(start)};
 }
 

@@ -10,12 +10,12 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <memory>
 #include <optional>
 #include <ranges>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -27,6 +27,7 @@
 #include <PCCD/Geodesic/Close_pairs_shortest_paths.h>
 #include <PCCD/Geodesic/geodesic_io.h>
 #include <PCCD/Hierarchy/Point_cloud_hierarchy.h>
+#include <PCCD/IO/Point_data.h>
 #include <PCCD/Identity_point_map.h>
 #include <PCCD/Point_cloud.h>
 #include <PCCD/Point_traits.h>
@@ -89,7 +90,8 @@ struct Preprocessing_times {
 /// \tparam K a model of PointCloudKernel.
 ///
 /// Immutable after construction; copies share the data. Thread safety: every member function is
-/// const and safe to call concurrently. save() and load() touch the file system only.
+/// const and safe to call concurrently. save() and load() touch only the file they are given (no
+/// scratch files).
 template <PointCloudKernel K = Eigen_kernel<double>>
 class Point_cloud_object {
 public:
@@ -130,6 +132,15 @@ public:
     Point_cloud_object(const Range& items, const PointMap& point_map, const NormalMap& normal_map,
                        const Point_cloud_object_options& options = {})
         : Point_cloud_object(timed_cloud(items, point_map), read_normals(items, normal_map), options)
+    {
+    }
+
+    /// From what a point file holds (PCCD::IO::read_points): its points, and its normals when it
+    /// has them, which then orient n(p_i) as in the constructor with a normal map.
+    /// \throws Invalid_input as the constructors above, and if there are normals but not exactly
+    ///         one per point.
+    explicit Point_cloud_object(const Point_data& data, const Point_cloud_object_options& options = {})
+        : Point_cloud_object(from_point_data(data, options))
     {
     }
 
@@ -213,6 +224,22 @@ private:
     static double ms_since(Clock::time_point start)
     {
         return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    }
+
+    /// Readable property map from an index to a row of a vector (points or normals of Point_data).
+    struct Row_map {
+        const std::vector<Eigen::Vector3d>* rows;
+        friend const Eigen::Vector3d& get(const Row_map& m, std::size_t i) { return (*m.rows)[i]; }
+    };
+    static Point_cloud_object from_point_data(const Point_data& data, const Point_cloud_object_options& options)
+    {
+        if (!data.has_normals()) return Point_cloud_object(data.points, Identity_point_map<Eigen::Vector3d>(), options);
+        if (data.normals.size() != data.points.size())
+            throw Invalid_input(internal::concat("point data: ", data.normals.size(), " normals for ",
+                                                 data.points.size(), " points (need one per point, or none)"));
+        std::vector<std::size_t> items(data.points.size());
+        for (std::size_t i = 0; i < items.size(); ++i) items[i] = i;
+        return Point_cloud_object(items, Row_map{&data.points}, Row_map{&data.normals}, options);
     }
 
     template <class Range, class PointMap>
@@ -353,33 +380,6 @@ private:
     std::size_t m_position = 0;
 };
 
-/// A scratch file removed when the object goes out of scope (the geodesic part of an object file
-/// goes through write_geodesic_data() / read_geodesic_data(), which work on paths).
-class Scratch_file {
-public:
-    explicit Scratch_file(std::filesystem::path path) : m_path(std::move(path)) {}
-    Scratch_file(const Scratch_file&) = delete;
-    Scratch_file& operator=(const Scratch_file&) = delete;
-    ~Scratch_file()
-    {
-        std::error_code ignored;
-        std::filesystem::remove(m_path, ignored);
-    }
-    std::string string() const { return m_path.string(); }
-
-private:
-    std::filesystem::path m_path;
-};
-
-inline std::filesystem::path scratch_path(const std::string& for_file)
-{
-    std::error_code error;
-    std::filesystem::path directory = std::filesystem::temp_directory_path(error);
-    if (error) directory = std::filesystem::path(for_file).parent_path();
-    const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
-    return directory / (std::filesystem::path(for_file).filename().string() + "." + std::to_string(stamp) + ".geo.tmp");
-}
-
 inline std::string read_binary_file(const std::string& path)
 {
     std::ifstream in(path, std::ios::binary);
@@ -398,9 +398,9 @@ template <PointCloudKernel K>
 void Point_cloud_object<K>::save(const std::string& path) const
 {
     const Data& d = *m_data;
-    internal::Scratch_file scratch(internal::scratch_path(path));
-    write_geodesic_data(scratch.string(), *d.graph, *d.cpsp);
-    const std::string geodesic = internal::read_binary_file(scratch.string());
+    std::ostringstream geodesic_stream(std::ios::binary);
+    internal::write_geodesic_stream(geodesic_stream, path, *d.graph, *d.cpsp);
+    const std::string geodesic = std::move(geodesic_stream).str();
 
     internal::Byte_writer out;
     out.write(internal::object_magic, sizeof internal::object_magic);
@@ -476,19 +476,8 @@ Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path,
         in.fail("inconsistent size of the geodesic section");
     if (!(std::isfinite(r) && r > 0.0)) in.fail(internal::concat("invalid sampling radius ", r));
 
-    internal::Scratch_file scratch(internal::scratch_path(path));
-    {
-        std::ofstream file(scratch.string(), std::ios::binary | std::ios::trunc);
-        file.write(bytes.data() + in.position(), std::streamsize(geodesic_size));
-        file.close();
-        if (!file) throw File_error(path, "cannot write a scratch file to read the geodesic section");
-    }
-    Geodesic_data geodesic;
-    try {
-        geodesic = read_geodesic_data(scratch.string());
-    } catch (const File_error& e) {
-        in.fail(internal::concat("geodesic section: ", e.what()));
-    }
+    std::istringstream geodesic_stream(bytes.substr(in.position(), geodesic_size), std::ios::binary);
+    Geodesic_data geodesic = internal::read_geodesic_stream(geodesic_stream, geodesic_size, path, "geodesic section: ");
     if (geodesic.graph.num_vertices() != n || geodesic.cpsp.size() != n)
         in.fail("the geodesic section does not have one vertex per point");
 

@@ -21,7 +21,9 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <istream>
 #include <limits>
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -83,12 +85,10 @@ private:
     std::size_t m_fill = 0;
 };
 
+/// Writes the geodesic format to a stream; `file` names it in error messages.
 class Geodesic_writer {
 public:
-    explicit Geodesic_writer(const std::string& path) : m_path(path), m_out(path, std::ios::binary | std::ios::trunc)
-    {
-        if (!m_out) throw File_error(path, "cannot open for writing");
-    }
+    Geodesic_writer(std::ostream& out, std::string file) : m_file(std::move(file)), m_out(out) {}
     template <class T>
     void put(const T& value)
     {
@@ -103,27 +103,28 @@ public:
     {
         m_checksum.update(data, size);
         m_out.write(static_cast<const char*>(data), std::streamsize(size));
-        if (!m_out) throw File_error(m_path, "write failed (disk full?)");
+        if (!m_out) throw File_error(m_file, "write failed (disk full?)");
     }
     void finish()
     {
         const std::uint64_t sum = m_checksum.value();
         m_out.write(reinterpret_cast<const char*>(&sum), sizeof sum);
-        m_out.close();
-        if (!m_out) throw File_error(m_path, "write failed (disk full?)");
+        m_out.flush();
+        if (!m_out) throw File_error(m_file, "write failed (disk full?)");
     }
 
 private:
-    std::string m_path;
-    std::ofstream m_out;
+    std::string m_file;
+    std::ostream& m_out;
     Word_checksum m_checksum;
 };
 
+/// Reads the geodesic format from a stream; errors are File_error(file, prefix + problem).
 class Geodesic_reader {
 public:
-    explicit Geodesic_reader(const std::string& path) : m_path(path), m_in(path, std::ios::binary)
+    Geodesic_reader(std::istream& in, std::string file, std::string prefix)
+        : m_file(std::move(file)), m_prefix(std::move(prefix)), m_in(in)
     {
-        if (!m_in) throw File_error(path, "cannot open for reading");
     }
     template <class T>
     T get()
@@ -153,11 +154,11 @@ public:
         if (std::size_t(m_in.gcount()) != sizeof stored) fail("truncated file");
         if (stored != expected) fail("checksum mismatch: the file is corrupted");
     }
-    [[noreturn]] void fail(const std::string& problem) const { throw File_error(m_path, problem); }
+    [[noreturn]] void fail(const std::string& problem) const { throw File_error(m_file, m_prefix + problem); }
 
 private:
-    std::string m_path;
-    std::ifstream m_in;
+    std::string m_file, m_prefix;
+    std::istream& m_in;
     Word_checksum m_checksum;
 };
 
@@ -169,18 +170,16 @@ inline std::uint64_t geodesic_file_size(std::uint64_t n, std::uint64_t e, std::u
 
 } // namespace internal
 
-/// Writes `graph` and `cpsp` (built on that graph) to the binary file `path` (format in the header
-/// comment), replacing it.
-/// \throws File_error if the file cannot be written; Invalid_input if the two do not have the same
-///         number of points.
-/// Complexity: O(size of the data). Thread safety: reads its arguments only.
-inline void write_geodesic_data(const std::string& path, const Proximity_graph& graph,
-                                const Close_pairs_shortest_paths& cpsp)
+namespace internal {
+
+/// The body of write_geodesic_data(), to any stream; `file` names it in error messages.
+inline void write_geodesic_stream(std::ostream& stream, const std::string& file, const Proximity_graph& graph,
+                                  const Close_pairs_shortest_paths& cpsp)
 {
     if (graph.num_vertices() != cpsp.size())
         throw Invalid_input(internal::concat("geodesic file: the graph has ", graph.num_vertices(),
                                              " points but the CPSP map ", cpsp.size()));
-    internal::Geodesic_writer out(path);
+    internal::Geodesic_writer out(stream, file);
     out.write(internal::geodesic_magic, sizeof internal::geodesic_magic);
     out.put(geodesic_file_version);
     out.put(internal::byte_order_mark);
@@ -209,18 +208,34 @@ inline void write_geodesic_data(const std::string& path, const Proximity_graph& 
     out.finish();
 }
 
-/// Reads a file written by write_geodesic_data(). The result equals what was written, bit for bit.
-/// \throws File_error naming the file and the problem if it cannot be read, is not a PCCD geodesic
-///         file, was written by another format version or on a machine of other byte order, is
-///         truncated or longer than its header says, fails its checksum, or holds an inconsistent
-///         graph or CPSP map.
-/// Complexity: O(size of the data).
-inline Geodesic_data read_geodesic_data(const std::string& path)
+} // namespace internal
+
+/// Writes `graph` and `cpsp` (built on that graph) to the binary file `path` (format in the header
+/// comment), replacing it.
+/// \throws File_error if the file cannot be written; Invalid_input if the two do not have the same
+///         number of points.
+/// Complexity: O(size of the data). Thread safety: reads its arguments only.
+inline void write_geodesic_data(const std::string& path, const Proximity_graph& graph,
+                                const Close_pairs_shortest_paths& cpsp)
 {
-    internal::Geodesic_reader in(path);
-    std::error_code error;
-    const std::uint64_t file_size = std::filesystem::file_size(path, error);
-    if (error) in.fail("cannot read the file size");
+    if (graph.num_vertices() != cpsp.size())
+        throw Invalid_input(internal::concat("geodesic file: the graph has ", graph.num_vertices(),
+                                             " points but the CPSP map ", cpsp.size()));
+    std::ofstream file(path, std::ios::binary | std::ios::trunc);
+    if (!file) throw File_error(path, "cannot open for writing");
+    internal::write_geodesic_stream(file, path, graph, cpsp);
+    file.close();
+    if (!file) throw File_error(path, "write failed (disk full?)");
+}
+
+namespace internal {
+
+/// The body of read_geodesic_data(): reads `file_size` bytes of the geodesic format from `stream`
+/// (exactly that many must make up the data); errors are File_error(file, prefix + problem).
+inline Geodesic_data read_geodesic_stream(std::istream& stream, std::uint64_t file_size, const std::string& file,
+                                          const std::string& prefix)
+{
+    internal::Geodesic_reader in(stream, file, prefix);
     char magic[8];
     if (file_size < sizeof magic) in.fail("truncated file: not a PCCD geodesic file");
     in.read(magic, sizeof magic);
@@ -298,6 +313,24 @@ inline Geodesic_data read_geodesic_data(const std::string& path)
                           parameter);
     return {std::move(graph), Close_pairs_shortest_paths(radius, support, std::move(offsets), std::move(cpsp_targets),
                                                          std::move(distances), std::move(predecessors))};
+}
+
+} // namespace internal
+
+/// Reads a file written by write_geodesic_data(). The result equals what was written, bit for bit.
+/// \throws File_error naming the file and the problem if it cannot be read, is not a PCCD geodesic
+///         file, was written by another format version or on a machine of other byte order, is
+///         truncated or longer than its header says, fails its checksum, or holds an inconsistent
+///         graph or CPSP map.
+/// Complexity: O(size of the data).
+inline Geodesic_data read_geodesic_data(const std::string& path)
+{
+    std::ifstream file(path, std::ios::binary);
+    if (!file) throw File_error(path, "cannot open for reading");
+    std::error_code error;
+    const std::uint64_t file_size = std::filesystem::file_size(path, error);
+    if (error) throw File_error(path, "cannot read the file size");
+    return internal::read_geodesic_stream(file, file_size, path, "");
 }
 
 } // namespace PCCD
