@@ -159,11 +159,9 @@ private:
     template <class T>
     static FT narrowed(const T& value, std::size_t point)
     {
-        if constexpr (std::is_arithmetic_v<T> && (sizeof(T) > sizeof(FT))) {
-            if (std::isfinite(value) && std::isgreater(std::fabs(value), T(std::numeric_limits<FT>::max())))
-                throw Invalid_input(internal::concat("point ", point, " has a coordinate (", value,
-                                                     ") beyond the range of the kernel's ", sizeof(FT) == 4 ? "float" : "number type"));
-        }
+        if (internal::overflows_on_conversion<FT>(value))
+            throw Invalid_input(internal::concat("point ", point, " has a coordinate (", value,
+                                                 ") beyond the range of the kernel's ", sizeof(FT) == 4 ? "float" : "number type"));
         return static_cast<FT>(value);
     }
 

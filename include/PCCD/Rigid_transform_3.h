@@ -22,6 +22,7 @@
 #include <Eigen/SVD>
 
 #include <PCCD/Error.h>
+#include <PCCD/internal/finite.h>
 
 namespace PCCD {
 namespace internal {
@@ -123,7 +124,7 @@ public:
     {
         Matrix_3x4 m;
         for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 4; ++j) m(i, j) = internal::to_floating_point<FT>(transformation.m(i, j));
+            for (int j = 0; j < 4; ++j) m(i, j) = narrowed(internal::to_floating_point<double>(transformation.m(i, j)), i, j);
         set_checked(m, tolerance);
     }
 
@@ -136,12 +137,10 @@ private:
     template <class T>
     static FT narrowed(const T& value, int i, int j)
     {
-        if constexpr (std::is_arithmetic_v<T> && (sizeof(T) > sizeof(FT))) {
-            if (std::isfinite(value) && std::isgreater(std::fabs(value), T(std::numeric_limits<FT>::max())))
-                throw Invalid_input(internal::concat("rigid transform: ", j == 3 ? "translation" : "rotation",
-                                                     " entry (", i, ", ", j, ") = ", value, " is beyond the range of ",
-                                                     sizeof(FT) == 4 ? "float" : "the number type"));
-        }
+        if (internal::overflows_on_conversion<FT>(value))
+            throw Invalid_input(internal::concat("rigid transform: ", j == 3 ? "translation" : "rotation",
+                                                 " entry (", i, ", ", j, ") = ", value, " is beyond the range of ",
+                                                 sizeof(FT) == 4 ? "float" : "the number type"));
         return static_cast<FT>(value);
     }
 

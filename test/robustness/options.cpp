@@ -235,4 +235,9 @@ TEST_CASE("a float transform from doubles beyond FLT_MAX is rejected by entry", 
     // in Debug; in Release the message said the entry was infinity).
     require_invalid_input([] { PCCD::Rigid_transform_3<float> t(Eigen::Matrix3d::Identity(), Eigen::Vector3d(1e39, 0, 0)); },
                           {"translation entry (0, 3)", "float"});
+    // The same through the constructor from an affine transformation exposing m(i, j) (CGAL style).
+    struct Affine {
+        double m(int i, int j) const { return i == 1 && j == 3 ? -1e39 : (i == j ? 1.0 : 0.0); }
+    };
+    require_invalid_input([] { PCCD::Rigid_transform_3<float> t(Affine{}); }, {"translation entry (1, 3)", "float"});
 }
