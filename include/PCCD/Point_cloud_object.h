@@ -11,11 +11,13 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <istream>
 #include <iterator>
 #include <memory>
 #include <optional>
 #include <ranges>
 #include <sstream>
+#include <streambuf>
 #include <string>
 #include <utility>
 #include <vector>
@@ -380,6 +382,17 @@ private:
     std::size_t m_position = 0;
 };
 
+/// A read-only stream buffer over bytes held elsewhere, without copying them (the geodesic section
+/// of a loaded object file, read in place).
+class Span_streambuf : public std::streambuf {
+public:
+    Span_streambuf(const char* data, std::size_t size)
+    {
+        char* begin = const_cast<char*>(data); // a get area only: never written through
+        setg(begin, begin, begin + size);
+    }
+};
+
 inline std::string read_binary_file(const std::string& path)
 {
     std::ifstream in(path, std::ios::binary);
@@ -476,7 +489,8 @@ Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path,
         in.fail("inconsistent size of the geodesic section");
     if (!(std::isfinite(r) && r > 0.0)) in.fail(internal::concat("invalid sampling radius ", r));
 
-    std::istringstream geodesic_stream(bytes.substr(in.position(), geodesic_size), std::ios::binary);
+    internal::Span_streambuf geodesic_section(bytes.data() + in.position(), geodesic_size);
+    std::istream geodesic_stream(&geodesic_section);
     Geodesic_data geodesic = internal::read_geodesic_stream(geodesic_stream, geodesic_size, path, "geodesic section: ");
     if (geodesic.graph.num_vertices() != n || geodesic.cpsp.size() != n)
         in.fail("the geodesic section does not have one vertex per point");

@@ -172,13 +172,19 @@ inline std::uint64_t geodesic_file_size(std::uint64_t n, std::uint64_t e, std::u
 
 namespace internal {
 
-/// The body of write_geodesic_data(), to any stream; `file` names it in error messages.
-inline void write_geodesic_stream(std::ostream& stream, const std::string& file, const Proximity_graph& graph,
-                                  const Close_pairs_shortest_paths& cpsp)
+/// \throws Invalid_input unless `cpsp` has one list per vertex of `graph`.
+inline void check_same_points(const Proximity_graph& graph, const Close_pairs_shortest_paths& cpsp)
 {
     if (graph.num_vertices() != cpsp.size())
         throw Invalid_input(internal::concat("geodesic file: the graph has ", graph.num_vertices(),
                                              " points but the CPSP map ", cpsp.size()));
+}
+
+/// The body of write_geodesic_data(), to any stream; `file` names it in error messages.
+inline void write_geodesic_stream(std::ostream& stream, const std::string& file, const Proximity_graph& graph,
+                                  const Close_pairs_shortest_paths& cpsp)
+{
+    check_same_points(graph, cpsp);
     internal::Geodesic_writer out(stream, file);
     out.write(internal::geodesic_magic, sizeof internal::geodesic_magic);
     out.put(geodesic_file_version);
@@ -218,9 +224,7 @@ inline void write_geodesic_stream(std::ostream& stream, const std::string& file,
 inline void write_geodesic_data(const std::string& path, const Proximity_graph& graph,
                                 const Close_pairs_shortest_paths& cpsp)
 {
-    if (graph.num_vertices() != cpsp.size())
-        throw Invalid_input(internal::concat("geodesic file: the graph has ", graph.num_vertices(),
-                                             " points but the CPSP map ", cpsp.size()));
+    internal::check_same_points(graph, cpsp); // before the file is truncated
     std::ofstream file(path, std::ios::binary | std::ios::trunc);
     if (!file) throw File_error(path, "cannot open for writing");
     internal::write_geodesic_stream(file, path, graph, cpsp);
