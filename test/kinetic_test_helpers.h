@@ -1,5 +1,5 @@
-// Shared helper of the kinetic tests: the bound on the number of events of a kinetic tree over
-// points with linear flightplans.
+// Shared helpers of the kinetic tests: the nodes of a tree in preorder, and the bound on the number
+// of events of a kinetic tree over points with linear flightplans.
 #pragma once
 
 #include <cstddef>
@@ -39,16 +39,7 @@ template <class Tree>
 std::uint64_t envelope_bound(const Tree& tree)
 {
     std::vector<std::size_t> size(tree.node_count(), 0);
-    std::vector<std::uint32_t> order, stack{tree.root()};
-    while (!stack.empty()) {
-        const auto x = stack.back();
-        stack.pop_back();
-        order.push_back(x);
-        if (!tree.is_leaf(x)) {
-            stack.push_back(tree.left(x));
-            stack.push_back(tree.right(x));
-        }
-    }
+    const auto order = nodes_in_preorder(tree);
     std::uint64_t bound = 0;
     for (auto it = order.rbegin(); it != order.rend(); ++it) {
         size[*it] = tree.is_leaf(*it) ? 1 : size[tree.left(*it)] + size[tree.right(*it)];

@@ -388,10 +388,7 @@ public:
     void first_hits(std::span<const Kinetic_ray> rays, std::vector<std::optional<Kinetic_ray_hit>>& out) const
         requires(P::vertex_count == 3)
     {
-        out.clear();
-        out.reserve(rays.size());
-        const Query_view view(*this);
-        for (const Kinetic_ray& ray : rays) out.push_back(internal::first_hit(view, ray));
+        internal::first_hits(Query_view(*this), rays, out);
     }
     /// Simultaneous traversal with `other`: `descend(node_a, node_b, box_a, box_b) -> bool` opens a
     /// node pair, `on_leaf_pair(node_a, node_b)` receives the leaf pairs it lets through. This is

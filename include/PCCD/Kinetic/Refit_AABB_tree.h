@@ -179,9 +179,7 @@ public:
     void first_hits(std::span<const Kinetic_ray> rays, std::vector<std::optional<Kinetic_ray_hit>>& out) const
         requires(P::vertex_count == 3)
     {
-        out.clear();
-        out.reserve(rays.size());
-        for (const Kinetic_ray& ray : rays) out.push_back(internal::first_hit(*this, ray));
+        internal::first_hits(*this, rays, out);
     }
     template <class Tree, class Descend, class OnLeafPair>
     void traverse(const Tree& other, Descend&& descend, OnLeafPair&& on_leaf_pair) const

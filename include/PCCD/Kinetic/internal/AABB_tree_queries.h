@@ -247,5 +247,15 @@ std::optional<Kinetic_ray_hit> first_hit(const Tree& tree, const Kinetic_ray& ra
     return best;
 }
 
+/// first_hit() of each ray in `rays`, in order, into `out` (cleared first), all through the same
+/// tree view (for the kinetic tree: one query memo shared by the rays).
+template <class Tree, class Rays>
+void first_hits(const Tree& tree, const Rays& rays, std::vector<std::optional<Kinetic_ray_hit>>& out)
+{
+    out.clear();
+    out.reserve(rays.size());
+    for (const Kinetic_ray& ray : rays) out.push_back(first_hit(tree, ray));
+}
+
 } // namespace internal
 } // namespace PCCD
