@@ -9,9 +9,10 @@
 #include <PCCD/Random.h>
 #include <PCCD/Sampling/pose_generator.h>
 
+#include "intersection_test_helpers.h"
+
 #include <catch2/catch.hpp>
 
-#include <bit>
 #include <cstdint>
 #include <exception>
 #include <string>
@@ -94,25 +95,7 @@ std::vector<Query> make_queries(std::size_t count)
     return queries;
 }
 
-/// Bit-for-bit equality (NaN fields included), with a description of the first difference.
-std::string difference(const PCCD::Intersection_result& x, const PCCD::Intersection_result& y)
-{
-    const auto bits = [](double v) { return std::bit_cast<std::uint64_t>(v); };
-    if (x.intersects != y.intersects) return "intersects";
-    if (x.status != y.status) return "status";
-    if (!(x.counters == y.counters)) return "counters";
-    if (bits(x.closest_estimate) != bits(y.closest_estimate)) return "closest_estimate";
-    if (x.points.size() != y.points.size()) return "number of points";
-    for (std::size_t k = 0; k < x.points.size(); ++k) {
-        const auto& p = x.points[k];
-        const auto& q = y.points[k];
-        for (int d = 0; d < 3; ++d)
-            if (bits(p.position(d)) != bits(q.position(d))) return "point " + std::to_string(k) + " position";
-        if (bits(p.f_a) != bits(q.f_a) || bits(p.f_b) != bits(q.f_b)) return "point " + std::to_string(k) + " f values";
-        if (p.kind != q.kind) return "point " + std::to_string(k) + " kind";
-    }
-    return {};
-}
+using pccd_test::result_difference;
 
 /// Answers the queries with `threads` threads; thread t answers the indices order[t], order[t +
 /// threads], ... Exceptions are carried back to the caller.
@@ -175,7 +158,7 @@ TEST_CASE("Concurrent queries on shared objects equal the sequential answers bit
         const auto concurrent = answer_concurrently(queries, order, 4);
         for (std::size_t k = 0; k < queries.size(); ++k) {
             INFO(name << " order, query " << k);
-            CHECK(difference(concurrent[k], sequential[k]) == "");
+            CHECK(result_difference(concurrent[k], sequential[k]) == "");
         }
     }
 }
@@ -197,13 +180,13 @@ TEST_CASE("Different seeds may give different answers, each reproducible from an
     for (std::size_t k = 0; k < queries.size(); ++k) {
         INFO("query " << k);
         CHECK(first[k].intersects);
-        CHECK(difference(again[k], first[k]) == "");
+        CHECK(result_difference(again[k], first[k]) == "");
     }
     // The seed matters: per policy, the seeds do not all give the same counters and points.
     for (std::size_t policy = 0; policy < 2; ++policy) {
         std::size_t distinct = 0;
         for (std::size_t s = 1; s < seeds; ++s)
-            distinct += difference(first[policy * seeds + s], first[policy * seeds]) != "";
+            distinct += result_difference(first[policy * seeds + s], first[policy * seeds]) != "";
         INFO("policy " << policy);
         CHECK(distinct >= seeds / 2);
     }

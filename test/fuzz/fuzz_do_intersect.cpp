@@ -33,6 +33,7 @@
 // per role for the interpolation search) and 1023 samples for RST, a reduced Monte-Carlo sampling
 // radius, one thread.
 #include "fuzz_support.h"
+#include "../intersection_test_helpers.h"
 
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
@@ -254,23 +255,6 @@ bool options_valid(const Query& q)
            p.partner_candidates >= 1;
 }
 
-bool same_bits(double x, double y) { return std::bit_cast<std::uint64_t>(x) == std::bit_cast<std::uint64_t>(y); }
-
-bool identical(const PCCD::Intersection_result& x, const PCCD::Intersection_result& y)
-{
-    if (x.intersects != y.intersects || x.status != y.status || !(x.counters == y.counters) ||
-        !same_bits(x.closest_estimate, y.closest_estimate) || x.points.size() != y.points.size())
-        return false;
-    for (std::size_t k = 0; k < x.points.size(); ++k) {
-        const PCCD::Intersection_point& p = x.points[k];
-        const PCCD::Intersection_point& r = y.points[k];
-        if (p.kind != r.kind || !same_bits(p.f_a, r.f_a) || !same_bits(p.f_b, r.f_b)) return false;
-        for (int d = 0; d < 3; ++d)
-            if (!same_bits(p.position(d), r.position(d))) return false;
-    }
-    return true;
-}
-
 /// The invariants of a result (do_intersect.h, Intersection_result.h, the policies' code).
 void check_result(const PCCD::Intersection_result& r, const Query& q, const Object& a, const Object& b)
 {
@@ -422,6 +406,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     require(valid, "the query accepted invalid options or policy parameters");
     check_result(*first, q, *a, *b);
     expect_invalid_input([](const PCCD::Invalid_input& e) { PCCD::fuzz::finding("second call threw", e.what()); },
-                         [&] { require(identical(*first, query()), "the same query gave a different result"); });
+                         [&] { require(pccd_test::result_difference(*first, query()).empty(), "the same query gave a different result"); });
     return 0;
 }
