@@ -202,14 +202,23 @@ TEST_CASE("Two spheres: do_intersect agrees with the analytic answer for both po
             if (truth) {
                 REQUIRE(isearch.points.size() == 1);
                 REQUIRE(rst.points.size() == 1);
-                // The first hit lies near both spheres (AIP: on A's chord, near B's zero set).
+                // The first hit is a verified contact: projected onto both surfaces, so it lies near
+                // both analytic spheres (within the surfaces' own error, a fraction of r).
                 const Eigen::Vector3d x = isearch.points[0].position;
                 CHECK(std::abs(x.norm() - 1.0) < 0.5 * r);
                 CHECK(std::abs((x - Eigen::Vector3d(d, 0, 0)).norm() - 1.0) < 0.5 * r);
                 const Eigen::Vector3d y = rst.points[0].position;
-                CHECK(std::abs(y.norm() - 1.0) < r);
-                CHECK(std::abs((y - Eigen::Vector3d(d, 0, 0)).norm() - 1.0) < r);
-                CHECK(rst.points[0].kind == PCCD::Intersection_point_kind::sampled);
+                CHECK(std::abs(y.norm() - 1.0) < 0.5 * r);
+                CHECK(std::abs((y - Eigen::Vector3d(d, 0, 0)).norm() - 1.0) < 0.5 * r);
+                CHECK(isearch.points[0].kind == PCCD::Intersection_point_kind::refined);
+                CHECK(rst.points[0].kind == PCCD::Intersection_point_kind::refined);
+                // Unverified (the published methods): an AIP and an RST sample, as found.
+                PCCD::Intersection_options raw = options;
+                raw.verify_contacts = false;
+                CHECK(PCCD::do_intersect(s.a, Rigid_transform_3<double>(), s.b, shifted(d), raw,
+                                         PCCD::Randomized_sampling{})
+                          .points[0]
+                          .kind == PCCD::Intersection_point_kind::sampled);
                 CHECK(isearch.counters.brackets_found + 1 >= 1);
             }
             CHECK(isearch.counters.f_evaluations >= isearch.counters.search_steps);

@@ -43,6 +43,8 @@
 #include <PCCD/Surface/bandwidth.h>
 #include <PCCD/Surface/estimate_normals.h>
 #include <PCCD/Surface/orient_normals.h>
+#include <PCCD/Surface/outliers.h>
+#include <PCCD/Surface/surface_domain.h>
 #include <PCCD/concepts/PointCloudKernel.h>
 #include <PCCD/concepts/ReadablePointMap.h>
 #include <PCCD/sampling_radius.h>
@@ -62,6 +64,12 @@ struct Point_cloud_object_options {
     Sampling_radius_options sampling_radius = {};
     /// The kernel: eta (default 3), theta_eps (default 1e-2), or a bandwidth h given by the user.
     Bandwidth_options bandwidth = {};
+    /// The surface's domain: f is defined only within D_i of the nearest cloud point (default: D_i =
+    /// the distance to the 6th nearest other point).
+    Surface_domain_options domain = {};
+    /// Isolated points (stray returns of a scanner) left out of the surface before anything else is
+    /// built (default: removed, see Outlier_options).
+    Outlier_options outliers = {};
     /// The point cloud hierarchy the intersection queries traverse (default: leaves of 16 points).
     Point_cloud_hierarchy_options hierarchy = {};
     /// Worker threads of every stage; 0 (default) uses all available. Ignored without TBB. The
@@ -80,14 +88,32 @@ struct Preprocessing_times {
     double normals = 0.0;
     /// The point cloud hierarchy (rebuilt on load, like the kd-tree).
     double hierarchy = 0.0;
+    /// The local spacing: outlier test and domain radii (rebuilt on load).
+    double outliers = 0.0;
+};
+
+/// What preprocessing found out about the cloud as a scan (doc/manual/surface.md, "Scans").
+struct Scan_estimate {
+    /// The number of points given.
+    std::size_t input_points = 0;
+    /// The indices (into the points given, ascending) of the isolated outliers left out of the
+    /// surface (Outlier_options); cloud() holds the other points, in their order.
+    std::vector<std::uint32_t> outliers;
+    /// The estimated noise level sigma of the points (noise_estimate(): median leave-one-out
+    /// residual / 0.6745), length unit of the cloud. On clean samples it is the curvature the
+    /// kernel's plane cannot follow, about 0.1 mean spacings.
+    double noise = 0.0;
 };
 
 /// The preprocessed state of one point cloud: everything a collision query needs, built once.
 ///
-/// Construction runs, in order: the kd-tree (Point_cloud), the proximity graph, the sampling radius
-/// r(P), the kernel bandwidth h = eta r(P) / sqrt(-ln theta_eps) (or the user's h), the CPSP map
-/// bounded at the kernel's support radius R = h sqrt(-ln theta_eps), the unoriented normals n(p_i)
-/// of the geodesic surface, and their orientation (over the graph, or like normals the user gives).
+/// Construction runs, in order: the kd-tree (Point_cloud), the removal of isolated outliers
+/// (Outlier_options), the proximity graph, the sampling radius r(P), the kernel bandwidth
+/// h = eta r(P) / sqrt(-ln theta_eps) (or the user's h), the CPSP map bounded at the kernel's
+/// support radius R = h sqrt(-ln theta_eps), the unoriented normals n(p_i) of the geodesic surface
+/// with the noise estimate (and, when the noise asks for a wider kernel, CPSP map and normals once
+/// more with it: Bandwidth_options::noise_factor), their orientation (over the graph, or like
+/// normals the user gives), and the surface's domain radii (Surface_domain_options).
 ///
 /// \tparam K a model of PointCloudKernel.
 ///
@@ -103,7 +129,7 @@ public:
     using Euclidean_surface = WLS_surface<Euclidean_distance<K>, Gaussian_weight>;
 
     /// Version of the file format written by save().
-    static constexpr std::uint32_t file_version = 1;
+    static constexpr std::uint32_t file_version = 2;
 
     /// \name Construction
     /// @{
@@ -191,6 +217,12 @@ public:
     const Orientation_report& orientation() const { return m_data->orientation; }
     /// True when the normals were oriented like normals the user gave.
     bool normals_given() const { return m_data->normals_given; }
+    /// Noise estimate and outliers (see Scan_estimate).
+    const Scan_estimate& scan() const { return m_data->scan; }
+    /// The estimated noise level sigma (scan().noise).
+    double noise_estimate() const { return m_data->scan.noise; }
+    /// The domain radii D_i of the surface (empty when the domain is disabled).
+    const Eigen::VectorXd& domain_radii() const { return m_data->geodesic.domain_radii(); }
     const Preprocessing_times& timings() const { return m_data->timings; }
     /// @}
 
@@ -204,6 +236,7 @@ private:
         double sampling_radius;
         Orientation_report orientation;
         bool normals_given;
+        Scan_estimate scan;
         Preprocessing_times timings;
         Geodesic_surface geodesic;
         Euclidean_surface euclidean;
@@ -269,19 +302,48 @@ private:
 
     static Data make_data(Point_cloud<K> cloud, std::shared_ptr<const Proximity_graph> graph,
                           std::shared_ptr<const Close_pairs_shortest_paths> cpsp, double sampling_radius,
-                          const Gaussian_weight& weight, Eigen::Matrix3Xd normals, Orientation_report orientation,
-                          bool normals_given, Preprocessing_times timings,
-                          const Point_cloud_hierarchy_options& hierarchy_options)
+                          const Gaussian_weight& weight, Eigen::Matrix3Xd normals, Eigen::VectorXd domain,
+                          Orientation_report orientation, bool normals_given, Scan_estimate scan,
+                          Preprocessing_times timings, const Point_cloud_hierarchy_options& hierarchy_options)
     {
-        Geodesic_surface geodesic(Geodesic_distance<K>(cloud, cpsp), weight, normals);
-        Euclidean_surface euclidean(Euclidean_distance<K>(cloud), weight, std::move(normals));
+        Geodesic_surface geodesic(Geodesic_distance<K>(cloud, cpsp), weight, normals, domain);
+        Euclidean_surface euclidean(Euclidean_distance<K>(cloud), weight, std::move(normals), std::move(domain));
         const auto start = Clock::now();
         Point_cloud_hierarchy hierarchy(cloud.coordinates(), hierarchy_options);
         timings.hierarchy = ms_since(start);
         return Data{std::move(cloud),       std::move(graph),     std::move(cpsp),
                     sampling_radius,        orientation,          normals_given,
-                    timings,                std::move(geodesic),  std::move(euclidean),
-                    std::move(hierarchy)};
+                    std::move(scan),        timings,              std::move(geodesic),
+                    std::move(euclidean),   std::move(hierarchy)};
+    }
+
+    /// Removes the outliers of `cloud` (and their given normals) in place; returns their indices.
+    static std::vector<std::uint32_t> remove_outliers(Point_cloud<K>& cloud, std::optional<Eigen::Matrix3Xd>& given_normals,
+                                                      const Outlier_options& options)
+    {
+        if (!options.remove) return {};
+        std::vector<std::uint32_t> outliers = find_outliers(cloud, options);
+        if (outliers.empty()) return outliers;
+        if (cloud.size() - outliers.size() < 2)
+            throw Invalid_input(internal::concat("point cloud object: ", outliers.size(), " of the ", cloud.size(),
+                                                 " points are isolated outliers; fewer than two points are left"));
+        const Eigen::Index kept = Eigen::Index(cloud.size() - outliers.size());
+        typename Point_cloud<K>::Coordinates inliers(3, kept);
+        Eigen::Matrix3Xd normals(3, given_normals ? kept : 0);
+        Eigen::Index next = 0;
+        std::size_t skip = 0;
+        for (std::size_t i = 0; i < cloud.size(); ++i) {
+            if (skip < outliers.size() && outliers[skip] == i) {
+                ++skip;
+                continue;
+            }
+            inliers.col(next) = cloud.position(std::uint32_t(i));
+            if (given_normals) normals.col(next) = given_normals->col(Eigen::Index(i));
+            ++next;
+        }
+        cloud = Point_cloud<K>(std::move(inliers));
+        if (given_normals) given_normals = std::move(normals);
+        return outliers;
     }
 
     static std::shared_ptr<const Data> preprocess(Timed_cloud built, std::optional<Eigen::Matrix3Xd> given_normals,
@@ -297,9 +359,19 @@ private:
         if (given_normals && std::size_t(given_normals->cols()) != cloud.size())
             throw Invalid_input(internal::concat("point cloud object: ", given_normals->cols(), " normals for ",
                                                  cloud.size(), " points"));
+        internal::check_domain_options(options.domain);
+        internal::check_outlier_options(options.outliers);
+        internal::check_noise_factor(options.bandwidth);
 
         auto start = Clock::now();
-        options.sphere_of_influence.threads = options.knn.threads = options.sampling_radius.threads = options.threads;
+        options.sphere_of_influence.threads = options.knn.threads = options.sampling_radius.threads =
+            options.domain.threads = options.outliers.threads = options.threads;
+        Scan_estimate scan;
+        scan.input_points = cloud.size();
+        scan.outliers = remove_outliers(cloud, given_normals, options.outliers);
+        timings.outliers = ms_since(start);
+
+        start = Clock::now();
         auto graph = std::make_shared<const Proximity_graph>(options.graph == Graph_kind::knn
                                                                  ? knn_graph(cloud, options.knn)
                                                                  : sphere_of_influence_graph(cloud, options.sphere_of_influence));
@@ -308,25 +380,41 @@ private:
         start = Clock::now();
         const double r = PCCD::sampling_radius(cloud, options.sampling_radius);
         timings.sampling_radius = ms_since(start);
-        const Gaussian_weight weight = gaussian_weight(r, options.bandwidth);
+        Gaussian_weight weight = gaussian_weight(r, options.bandwidth);
+
+        std::shared_ptr<const Close_pairs_shortest_paths> cpsp;
+        Normal_estimate estimate;
+        // At most twice: a second time when the noise estimate asks for a wider kernel than the
+        // sampling radius alone (automatic bandwidth only).
+        for (int pass = 0; pass < 2; ++pass) {
+            start = Clock::now();
+            // The map must hold every point within the kernel's support radius R; its bound is
+            // support * r, so support = R / r (eta itself for the automatic bandwidth).
+            cpsp = std::make_shared<const Close_pairs_shortest_paths>(
+                *graph, r, Cpsp_options{.support = weight.support_radius() / r, .threads = options.threads});
+            timings.cpsp += ms_since(start);
+            start = Clock::now();
+            estimate = estimate_normals(Geodesic_distance<K>(cloud, cpsp), weight, options.threads);
+            timings.normals += ms_since(start);
+            scan.noise = PCCD::noise_estimate(estimate);
+            const std::optional<Gaussian_weight> wider = noise_aware_weight(weight, scan.noise, options.bandwidth);
+            if (!wider || pass == 1) break;
+            weight = *wider;
+        }
 
         start = Clock::now();
-        // The map must hold every point within the kernel's support radius R; its bound is
-        // support * r, so support = R / r (eta itself for the automatic bandwidth).
-        auto cpsp = std::make_shared<const Close_pairs_shortest_paths>(
-            *graph, r, Cpsp_options{.support = weight.support_radius() / r, .threads = options.threads});
-        timings.cpsp = ms_since(start);
-
-        start = Clock::now();
-        Normal_estimate estimate = estimate_normals(Geodesic_distance<K>(cloud, cpsp), weight, options.threads);
         const Orientation_report orientation = given_normals
                                                    ? orient_normals_like(estimate.normals, *given_normals)
                                                    : orient_normals(*graph, cloud.coordinates(), estimate.normals);
-        timings.normals = ms_since(start);
+        timings.normals += ms_since(start);
+        start = Clock::now();
+        Eigen::VectorXd domain = surface_domain_radii(cloud, options.domain);
+        timings.outliers += ms_since(start);
 
         return std::make_shared<const Data>(make_data(std::move(cloud), std::move(graph), std::move(cpsp), r, weight,
-                                                      std::move(estimate.normals), orientation,
-                                                      given_normals.has_value(), timings, options.hierarchy));
+                                                      std::move(estimate.normals), std::move(domain), orientation,
+                                                      given_normals.has_value(), std::move(scan), timings,
+                                                      options.hierarchy));
     }
 
     std::shared_ptr<const Data> m_data;
@@ -402,11 +490,15 @@ inline std::string read_binary_file(const std::string& path)
 
 } // namespace internal
 
-// File format (version 1, native byte order checked by a mark, no padding):
+// File format (version 2, native byte order checked by a mark, no padding):
 //   magic "PCCDOBJ\0" | u32 version | u32 byte-order mark | u64 N | f64 sampling radius
 //   f64 bandwidth h | f64 theta_eps | u8 normals given | u64 flipped, components, unoriented
-//   f64 timings[5] | f64 points[3N] | f64 normals[3N] | u64 G | G bytes: a geodesic file
+//   f64 timings[5] | f64 points[3N] | f64 normals[3N]
+//   | f64 noise | u64 input points | u64 M | u32 outliers[M] | u64 D (0 or N) | f64 domain radii[D]
+//   | u64 G | G bytes: a geodesic file
 //   | u64 checksum (FNV-1a over 64-bit words of everything before it)
+// Version 1 files (without the scan section) still load: no outliers, noise 0, and the domain of
+// the default Surface_domain_options.
 template <PointCloudKernel K>
 void Point_cloud_object<K>::save(const std::string& path) const
 {
@@ -432,6 +524,12 @@ void Point_cloud_object<K>::save(const std::string& path) const
     const Eigen::Matrix3Xd points = d.cloud.coordinates().template cast<double>();
     out.write(points.data(), sizeof(double) * std::size_t(points.size()));
     out.write(normals().data(), sizeof(double) * std::size_t(normals().size()));
+    out.put(d.scan.noise);
+    out.put(std::uint64_t(d.scan.input_points));
+    out.put(std::uint64_t(d.scan.outliers.size()));
+    out.write(d.scan.outliers.data(), sizeof(std::uint32_t) * d.scan.outliers.size());
+    out.put(std::uint64_t(domain_radii().size()));
+    out.write(domain_radii().data(), sizeof(double) * std::size_t(domain_radii().size()));
     out.put(std::uint64_t(geodesic.size()));
     out.write(geodesic.data(), geodesic.size());
     internal::Word_checksum checksum;
@@ -455,8 +553,9 @@ Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path,
     in.read(magic, sizeof magic);
     if (std::memcmp(magic, internal::object_magic, sizeof magic) != 0) in.fail("not a PCCD object file");
     const auto version = in.get<std::uint32_t>();
-    if (version != file_version)
-        in.fail(internal::concat("object file format version ", version, ", this PCCD reads version ", file_version));
+    if (version != file_version && version != 1)
+        in.fail(internal::concat("object file format version ", version, ", this PCCD reads versions 1 and ",
+                                 file_version));
     if (in.get<std::uint32_t>() != internal::byte_order_mark) in.fail("written on a machine of another byte order");
     if (bytes.size() < sizeof(std::uint64_t)) in.fail("truncated file");
     {
@@ -484,6 +583,28 @@ Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path,
     Eigen::Matrix3Xd points(3, Eigen::Index(n)), normals(3, Eigen::Index(n));
     in.read(points.data(), sizeof(double) * 3 * n);
     in.read(normals.data(), sizeof(double) * 3 * n);
+    Scan_estimate scan;
+    scan.input_points = std::size_t(n);
+    std::optional<Eigen::VectorXd> domain;
+    if (version >= 2) {
+        scan.noise = in.get<double>();
+        const auto input = in.get<std::uint64_t>();
+        const auto m = in.get<std::uint64_t>();
+        if (!(std::isfinite(scan.noise) && scan.noise >= 0.0)) in.fail(internal::concat("invalid noise estimate ", scan.noise));
+        if (input < n || input - n != m || in.remaining() / sizeof(std::uint32_t) < m)
+            in.fail(internal::concat("inconsistent outlier count ", m, " for ", input, " input points"));
+        scan.input_points = std::size_t(input);
+        scan.outliers.resize(std::size_t(m));
+        in.read(scan.outliers.data(), sizeof(std::uint32_t) * std::size_t(m));
+        for (std::size_t k = 0; k < scan.outliers.size(); ++k)
+            if (scan.outliers[k] >= input || (k > 0 && scan.outliers[k] <= scan.outliers[k - 1]))
+                in.fail("outlier indices out of range or not ascending");
+        const auto radii = in.get<std::uint64_t>();
+        if ((radii != 0 && radii != n) || in.remaining() / sizeof(double) < radii)
+            in.fail(internal::concat("inconsistent number of domain radii ", radii));
+        domain.emplace(Eigen::Index(radii));
+        in.read(domain->data(), sizeof(double) * std::size_t(radii));
+    }
     const auto geodesic_size = in.get<std::uint64_t>();
     if (in.remaining() < sizeof(std::uint64_t) || in.remaining() - sizeof(std::uint64_t) != geodesic_size)
         in.fail("inconsistent size of the geodesic section");
@@ -502,9 +623,10 @@ Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path,
         const Gaussian_weight weight(h, theta);
         auto cpsp = std::make_shared<const Close_pairs_shortest_paths>(std::move(geodesic.cpsp));
         auto graph = std::make_shared<const Proximity_graph>(std::move(geodesic.graph));
-        return Point_cloud_object(std::make_shared<const Data>(make_data(std::move(cloud), std::move(graph),
-                                                                         std::move(cpsp), r, weight, std::move(normals),
-                                                                         orientation, given, timings, hierarchy)));
+        if (!domain) domain = surface_domain_radii(cloud);
+        return Point_cloud_object(std::make_shared<const Data>(
+            make_data(std::move(cloud), std::move(graph), std::move(cpsp), r, weight, std::move(normals),
+                      std::move(*domain), orientation, given, std::move(scan), timings, hierarchy)));
     } catch (const File_error&) {
         throw;
     } catch (const Invalid_input& e) {

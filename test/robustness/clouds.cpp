@@ -250,15 +250,22 @@ TEST_CASE("clouds: far-apart pieces, isolated points and duplicated points", "[r
         CHECK(gap.status == PCCD::Surface_status::outside_support);
         require_consistent(gap);
     }
-    SECTION("an isolated outlier: the object builds, the outlier alone is unoriented")
+    SECTION("an isolated outlier: removed by default; kept, it alone is unoriented")
     {
         Points points = fibonacci_sphere(300);
         points.push_back({50, 50, 50});
         const Object object(points);
         require_finite_state(object);
-        CHECK(object.orientation().unoriented == 1);
-        CHECK(object.normals().col(300).isZero(0.0));
-        CHECK(object.orientation().components == 1);
+        CHECK(object.scan().outliers == std::vector<std::uint32_t>{300});
+        CHECK(object.scan().input_points == 301);
+        CHECK(object.size() == 300);
+        CHECK(object.orientation().unoriented == 0);
+        const Object kept(points, PCCD::Identity_point_map<Eigen::Vector3d>(), {.outliers = {.remove = false}});
+        require_finite_state(kept);
+        CHECK(kept.scan().outliers.empty());
+        CHECK(kept.orientation().unoriented == 1);
+        CHECK(kept.normals().col(300).isZero(0.0));
+        CHECK(kept.orientation().components == 1);
     }
     SECTION("every point duplicated: copies share their normal and their surface value")
     {

@@ -42,7 +42,11 @@ enum class Partner_choice : std::uint8_t {
 ///    and, for first-hit queries, at most max_samples,
 ///    where a = |Ŝ| (r(S) / r_s)^2 is the number of conceptual surfels of radius r_s = rho / 2 in the
 ///    region and rho the outer annulus radius (annulus_outer times S's CPSP bound).
-/// 2. For a sample p_i with f_T(p_i) defined and |f_T(p_i)| <= lipschitz_slack rho (otherwise no sign
+/// 2. A sample with |f_T(p_i)| <= epsilon is a candidate contact; with verified contacts
+///    (Intersection_options::verify_contacts) so is one with |f_T(p_i)| <= epsilon + sigma_S, sigma_S
+///    the sampled cloud's noise estimate, which the verification then accepts or rejects (this is
+///    what finds coincident surfaces, which have no sign change). For a sample p_i with f_T(p_i)
+///    defined and |f_T(p_i)| <= lipschitz_slack rho (otherwise no sign
 ///    change is reachable within rho), up to `partner_candidates` partners p_j from the annulus
 ///    rho (1 - annulus_width) < g(p_i, p_j) <= rho of p_i's CPSP list; the first with
 ///    f_T(p_i) f_T(p_j) < 0 makes a bracket.
@@ -162,6 +166,7 @@ struct Interpolation_search {
             return state.evaluate_local(tested, s_to_t.transform_point(sampled.position(i)));
         };
         const double r = sampled.sampling_radius();
+        const double noise_band = sampled.noise_estimate();
         std::uint32_t i = 0;
         while (!state.stop()) {
             // n = a ln a + c a samples of the region (an estimate until the region size is known).
@@ -182,9 +187,10 @@ struct Interpolation_search {
             const Surface_evaluation ei = evaluate_point(i);
             if (!ei.defined()) continue;
             const double di = ei.value;
-            if (std::abs(di) <= epsilon) {
-                state.sink.add(aip(pi_world));
-                continue;
+            // With verified contacts, a sample as close to the tested surface as the noise keeps it
+            // from its own is a candidate too: coincident surfaces have no sign change to bracket.
+            if (std::abs(di) <= epsilon || (state.verifier && std::abs(di) <= epsilon + noise_band)) {
+                if (state.offer(aip(pi_world)) || state.stop() || std::abs(di) <= epsilon) continue;
             }
             if (std::abs(di) > lipschitz_slack * rho) continue;
             ++state.counters.brackets_tried;
@@ -198,14 +204,14 @@ struct Interpolation_search {
                 const Surface_evaluation ej = evaluate_point(j);
                 if (!ej.defined()) continue;
                 if (std::abs(ej.value) <= epsilon) { // the partner lies on T itself
-                    state.sink.add(aip(sampled.to_world.transform_point(sampled.position(j))));
+                    state.offer(aip(sampled.to_world.transform_point(sampled.position(j))));
                     break;
                 }
                 if ((di < 0.0) == (ej.value < 0.0)) continue;
                 ++state.counters.brackets_found;
                 cpsp.path(i, entry, path);
                 if (auto aip = search_path(sampled, tested, s_to_t, path, di, ej.value, epsilon, state))
-                    state.sink.add(*aip);
+                    state.offer(*aip);
                 break;
             }
         }

@@ -49,8 +49,9 @@ struct Intersection_options {
     std::optional<double> epsilon = std::nullopt;
     /// The region searched (default: overlapping hierarchy leaves).
     Overlap_region region = Overlap_region::leaf_boxes;
-    /// Refinement of the points of intersection_points() (do_intersect() never refines: it answers
-    /// at the first AIP). Default: projection.
+    /// Refinement of the points of intersection_points() when contacts are not verified
+    /// (verify_contacts = false; verified points are already projected onto both surfaces).
+    /// do_intersect() never refines: it answers at the first candidate. Default: projection.
     Refinement refinement = Refinement::projection;
     /// intersection_points(): the smallest distance between two returned points (world units); the
     /// caller's density along the curves. Unset (default): the larger mean spacing of the two clouds.
@@ -65,6 +66,18 @@ struct Intersection_options {
     /// Sample both roles (points of A tested against f_B, then points of B against f_A). Default
     /// true; false samples only the object with fewer candidate points.
     bool symmetric = true;
+    /// Verified contacts (default true): a candidate the policy finds (an AIP of the interpolation
+    /// search, a cloud point with |f| <= epsilon, an RST sample) is only a candidate. It becomes a
+    /// result point only if damped Gauss-Newton steps from it reach a common zero of f_A and f_B,
+    /// max(|f_A|, |f_B|) <= contact_tolerance, inside both surfaces' domains and within
+    /// 2 max(r_A, r_B) of the candidate; the result point is that projected point (kind refined).
+    /// Rejected candidates are counted (Intersection_counters::candidates_rejected) and the search
+    /// goes on. false: the published methods as they are (a sample of A with |f_B| <= epsilon is a
+    /// contact), with intersection_points() refined as `refinement` says.
+    bool verify_contacts = true;
+    /// The verification's tolerance on max(|f_A|, |f_B|) (world units). Unset (default): 0.05 times
+    /// the smaller sampling radius, for both policies. When set: finite and > 0.
+    std::optional<double> contact_tolerance = std::nullopt;
 };
 
 namespace internal {
@@ -75,6 +88,9 @@ inline void check_options(const Intersection_options& o, const char* function)
         throw Invalid_input(concat(function, ": epsilon ", *o.epsilon, " must be finite and > 0 (leave it unset for the automatic value)"));
     if (o.point_spacing && !(std::isfinite(*o.point_spacing) && *o.point_spacing > 0.0))
         throw Invalid_input(concat(function, ": point_spacing ", *o.point_spacing,
+                                   " must be finite and > 0 (leave it unset for the automatic value)"));
+    if (o.contact_tolerance && !(std::isfinite(*o.contact_tolerance) && *o.contact_tolerance > 0.0))
+        throw Invalid_input(concat(function, ": contact_tolerance ", *o.contact_tolerance,
                                    " must be finite and > 0 (leave it unset for the automatic value)"));
     if (o.max_f_evaluations && *o.max_f_evaluations == 0)
         throw Invalid_input(concat(function, ": a budget of zero f evaluations (max_f_evaluations = 0) cannot answer; leave it unset for no budget"));

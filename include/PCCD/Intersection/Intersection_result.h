@@ -17,7 +17,8 @@ enum class Intersection_point_kind : std::uint8_t {
     /// An approximate intersection point (AIP, ALGORITHMS.md section 6.2): on the graph edge of one
     /// cloud where the other surface's f changes sign, linearly interpolated between its two ends.
     approximate = 0,
-    /// Refined (section 6.3): a point where both |f_A| and |f_B| are below the refinement threshold.
+    /// Refined (section 6.3) or verified: a point where both |f_A| and |f_B| are below the refinement
+    /// (or verification) tolerance, inside both surfaces' domains.
     refined = 1,
     /// Randomized sampling (section 5): a sample where both |f_A| and |f_B| are below epsilon.
     sampled = 2,
@@ -73,8 +74,13 @@ struct Intersection_counters {
     std::size_t samples = 0;
     /// Points of the two clouds inside the overlap region (the sets sampled from).
     std::size_t candidate_points = 0;
-    /// Samples drawn by the refinement.
+    /// Samples drawn by the refinement, and Gauss-Newton steps of the refinement and of the contact
+    /// verification (two f evaluations each).
     std::size_t refinement_samples = 0;
+    /// Candidate points (AIPs, points with |f| <= epsilon, RST samples) that the contact
+    /// verification rejected: no common zero of f_A and f_B inside both surfaces' domains within
+    /// reach (Intersection_options::verify_contacts).
+    std::size_t candidates_rejected = 0;
     /// Hierarchy traversal: node pairs tested and leaf pairs found overlapping. The interpolation
     /// search traverses only when it enumerates its region (after its rejection phase found the
     /// region small): a first hit in a deep overlap reports 0 leaf pairs.
@@ -92,6 +98,7 @@ struct Intersection_counters {
         samples += o.samples;
         candidate_points += o.candidate_points;
         refinement_samples += o.refinement_samples;
+        candidates_rejected += o.candidates_rejected;
         node_pairs += o.node_pairs;
         leaf_pairs += o.leaf_pairs;
         return *this;

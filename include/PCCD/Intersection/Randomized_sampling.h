@@ -98,7 +98,7 @@ struct Randomized_sampling {
             if (!ea.defined()) continue;
             closest = std::min(closest, std::max(std::abs(ea.value), std::abs(eb.value)));
             if (std::abs(ea.value) < epsilon)
-                state.sink.add(Intersection_point{b.to_world.transform_point(y), ea.value, eb.value,
+                state.offer(Intersection_point{b.to_world.transform_point(y), ea.value, eb.value,
                                                   Intersection_point_kind::sampled});
         }
     }

@@ -39,9 +39,16 @@ Intersection_result run_query(const A& a, const Rigid_transform_3<double>& pose_
 
     Intersection_result result;
     Query_state state(options.seed, options.max_f_evaluations, first_hit, spacing, result.points);
+    if (options.verify_contacts) {
+        const double tolerance = options.contact_tolerance.value_or(0.05 * r_min);
+        const double reach = 2.0 * std::max(pa.sampling_radius(), pb.sampling_radius());
+        state.verifier = [&pa, &pb, &state, tolerance, reach](const Intersection_point& candidate) {
+            return refine_by_projection(pa, pb, candidate.position, reach, tolerance, state);
+        };
+    }
     policy.run(pa, pb, options, epsilon, state, result.closest_estimate);
 
-    if (!first_hit && options.refinement != Refinement::none) {
+    if (!first_hit && !options.verify_contacts && options.refinement != Refinement::none) {
         // Refine every approximate point; a point that does not converge stays an AIP.
         for (Intersection_point& p : result.points) {
             if (p.kind != Intersection_point_kind::approximate || state.out_of_budget()) continue;

@@ -69,21 +69,34 @@ std::optional<Intersection_point> refine_by_sampling(const Posed_object<OA>& a, 
     return std::nullopt;
 }
 
-/// Projection refinement: Gauss-Newton steps on (f_A, f_B)(x) = 0 with the minimum-norm step
-/// dx = -J^T (J J^T)^-1 f, J = [n_A^T; n_B^T] (the gradients of the two WLS surfaces are their
-/// normals to first order). Stops when max(|f_A|, |f_B|) <= epsilon (returns the point), after
-/// `max_steps` steps, when a surface is undefined, when a step leaves the ball of `radius` around
-/// the start, or when the normals are parallel (tangential contact: J J^T singular).
+/// Projection refinement and contact verification: damped Gauss-Newton (Levenberg-Marquardt) steps
+/// on (f_A, f_B)(x) = 0, dx = -J^T (J J^T + lambda I)^-1 f with J = [n_A^T; n_B^T] (the gradients
+/// of the two WLS surfaces are their normals to first order) and lambda = `damping`. The damping
+/// keeps the step finite where the normals are (nearly) parallel: coincident surfaces converge onto
+/// their common zero set, parallel surfaces a gap g apart stop at the middle with max(|f_A|, |f_B|)
+/// = g / 2. Stops when max(|f_A|, |f_B|) <= epsilon (returns the point), after `max_steps` steps,
+/// when a surface is undefined at the start (outside its support or domain, or degenerate), or
+/// when a step leaves the ball of `radius` around the start. A step that lands where a surface is
+/// undefined is halved back towards the previous point (twice at most per projection).
 template <class OA, class OB>
 std::optional<Intersection_point> refine_by_projection(const Posed_object<OA>& a, const Posed_object<OB>& b,
                                                        const Eigen::Vector3d& start, double radius, double epsilon,
-                                                       Query_state& state, int max_steps = 5)
+                                                       Query_state& state, int max_steps = 8, double damping = 1e-3)
 {
     Eigen::Vector3d x = start;
+    Eigen::Vector3d previous = start;
+    int backtracks = 0;
     for (int step = 0; step <= max_steps && !state.out_of_budget(); ++step) {
         ++state.counters.refinement_samples;
         const auto both = evaluate_both(a, b, x, state);
-        if (!both) return std::nullopt;
+        if (!both) {
+            // A step that left a surface's support or domain is halved (at most twice in all);
+            // the start itself must be defined.
+            if (step == 0 || backtracks == 2) return std::nullopt;
+            ++backtracks;
+            x = 0.5 * (x + previous);
+            continue;
+        }
         const auto& [ea, eb] = *both;
         if (std::max(std::abs(ea.value), std::abs(eb.value)) <= epsilon)
             return Intersection_point{x, ea.value, eb.value, Intersection_point_kind::refined};
@@ -94,10 +107,9 @@ std::optional<Intersection_point> refine_by_projection(const Posed_object<OA>& a
         Eigen::Matrix<double, 2, 3> j;
         j.row(0) = na.transpose();
         j.row(1) = nb.transpose();
-        const Eigen::Matrix2d jjt = j * j.transpose();
-        const double det = jjt.determinant();
-        if (!(det > 1e-6)) return std::nullopt; // nearly parallel normals: no transversal crossing
+        const Eigen::Matrix2d jjt = j * j.transpose() + damping * Eigen::Matrix2d::Identity();
         const Eigen::Vector2d f(ea.value, eb.value);
+        previous = x;
         x -= j.transpose() * jjt.inverse() * f;
         if ((x - start).squaredNorm() > radius * radius) return std::nullopt;
     }

@@ -37,15 +37,21 @@ enum class Surface_status : std::uint8_t {
     /// points (or an isotropic neighbourhood) leave the smallest eigenvector of B undetermined, or
     /// the nearest cloud point has no normal to orient n(x) by.
     degenerate = 2,
+    /// x lies farther from its nearest cloud point p* than p*'s domain radius (the surface's
+    /// domain, doc/manual/surface.md "Where the surface is defined"): the fit may still be
+    /// computable there, but its zero set would be a spurious sheet far from the data, so f, n and
+    /// a are undefined.
+    outside_domain = 3,
 };
 
-/// "defined", "outside_support" or "degenerate".
+/// "defined", "outside_support", "degenerate" or "outside_domain".
 inline const char* to_string(Surface_status status)
 {
     switch (status) {
     case Surface_status::defined: return "defined";
     case Surface_status::outside_support: return "outside_support";
     case Surface_status::degenerate: return "degenerate";
+    case Surface_status::outside_domain: return "outside_domain";
     }
     return "unknown";
 }
@@ -99,15 +105,28 @@ public:
     /// \param normals 3 x N, column i the oriented normal of point i (N = distance.size()); a zero
     ///        column means point i has no normal (evaluations whose nearest point it is are
     ///        degenerate).
-    /// \throws Invalid_input if `normals` has the wrong size or a non-finite entry, or if the weight's
-    ///         support radius exceeds `distance.max_radius()` by more than a relative 1e-12 (e.g. a
-    ///         CPSP map built for a smaller bound than the kernel needs).
-    WLS_surface(Distance distance, Weight weight, Eigen::Matrix3Xd normals)
+    /// \param domain_radii the surface's domain: empty (the default: f is defined wherever the
+    ///        kernel's support holds a determined fit), or N radii D_i > 0 (+infinity allowed): f is
+    ///        defined at x only when |x - p*| <= D_{p*}, p* the cloud point nearest to x (see
+    ///        surface_domain_radii()).
+    /// \throws Invalid_input if `normals` has the wrong size or a non-finite entry, if
+    ///         `domain_radii` is neither empty nor of size N or holds a radius that is NaN or <= 0, or
+    ///         if the weight's support radius exceeds `distance.max_radius()` by more than a relative
+    ///         1e-12 (e.g. a CPSP map built for a smaller bound than the kernel needs).
+    WLS_surface(Distance distance, Weight weight, Eigen::Matrix3Xd normals, Eigen::VectorXd domain_radii = {})
         : m_distance(std::move(distance)),
           m_weight(std::move(weight)),
           m_support(double(m_weight.support_radius())),
-          m_normals(std::make_shared<const Eigen::Matrix3Xd>(std::move(normals)))
+          m_normals(std::make_shared<const Eigen::Matrix3Xd>(std::move(normals))),
+          m_domain(std::make_shared<const Eigen::VectorXd>(std::move(domain_radii)))
     {
+        if (m_domain->size() != 0 && std::size_t(m_domain->size()) != m_distance.size())
+            throw Invalid_input(internal::concat("WLS surface: ", m_domain->size(), " domain radii given for ",
+                                                 m_distance.size(), " points"));
+        for (Eigen::Index i = 0; i < m_domain->size(); ++i)
+            if (!std::isgreater((*m_domain)(i), 0.0))
+                throw Invalid_input(internal::concat("WLS surface: the domain radius of point ", i, " is ",
+                                                     (*m_domain)(i), "; it must be > 0"));
         if (std::size_t(m_normals->cols()) != m_distance.size())
             throw Invalid_input(internal::concat("WLS surface: ", m_normals->cols(), " normals given for ",
                                                  m_distance.size(), " points"));
@@ -182,6 +201,15 @@ public:
     double support_radius() const { return m_support; }
     /// The stored (oriented) normals, 3 x N.
     const Eigen::Matrix3Xd& normals() const { return *m_normals; }
+    /// The domain radii D_i (empty when the surface has no domain restriction).
+    const Eigen::VectorXd& domain_radii() const { return *m_domain; }
+    /// True when x, whose nearest cloud point is `nearest`, lies in the surface's domain.
+    bool in_domain(const Eigen::Vector3d& x, Index nearest) const
+    {
+        if (m_domain->size() == 0) return true;
+        const double limit = (*m_domain)(Eigen::Index(nearest));
+        return (m_distance.position(nearest) - x).squaredNorm() <= limit * limit;
+    }
     /// @}
 
 private:
@@ -195,6 +223,11 @@ private:
     {
         Surface_evaluation result;
         if (!nearest || sums.count == 0 || !(sums.weight > 0.0)) return result;
+        if (!in_domain(x, *nearest)) {
+            result.status = Surface_status::outside_domain;
+            result.nearest = *nearest;
+            return result;
+        }
         result.nearest = *nearest;
         result.neighbor_count = sums.count;
         result.weight_sum = sums.weight;
@@ -225,6 +258,7 @@ private:
     Weight m_weight;
     double m_support;
     std::shared_ptr<const Eigen::Matrix3Xd> m_normals;
+    std::shared_ptr<const Eigen::VectorXd> m_domain;
 };
 
 } // namespace PCCD

@@ -20,7 +20,9 @@ namespace PCCD {
 /// - `o.cpsp()`: the Close_pairs_shortest_paths map of its proximity graph (annulus, targets, path,
 ///   bound);
 /// - `o.hierarchy()`: a Point_cloud_hierarchy over its points;
-/// - `o.sampling_radius()`: r(P).
+/// - `o.sampling_radius()`: r(P);
+/// - `o.noise_estimate()`: the estimated noise level sigma of its points (0 for a clean cloud is
+///   fine), which widens the band of candidate contacts of the interpolation search.
 /// All of these must be const and safe to call concurrently.
 ///
 /// Model: PCCD::Point_cloud_object<K> for every kernel K.
@@ -34,6 +36,7 @@ concept CollisionObject = requires(const O& o, std::uint32_t i, const Eigen::Vec
     o.cpsp().bound();
     o.hierarchy().root();
     { o.sampling_radius() } -> std::convertible_to<double>;
+    { o.noise_estimate() } -> std::convertible_to<double>;
 };
 
 /// \concept LeafIntersector

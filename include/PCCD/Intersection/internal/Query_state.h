@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <unordered_map>
 #include <vector>
@@ -35,6 +36,7 @@ struct Posed_object {
     Eigen::Vector3d position(std::uint32_t i) const { return object->cloud().position(i).template cast<double>(); }
     std::size_t size() const { return object->size(); }
     double sampling_radius() const { return object->sampling_radius(); }
+    double noise_estimate() const { return double(object->noise_estimate()); }
     double support_radius() const { return object->surface().support_radius(); }
 };
 
@@ -110,11 +112,16 @@ private:
 
 /// Counters, budget, engine and sink of one query.
 struct Query_state {
+    /// Turns a candidate point into a verified contact (the projected point), or rejects it.
+    using Verifier = std::function<std::optional<Intersection_point>(const Intersection_point&)>;
+
     Intersection_counters counters;
     std::optional<std::size_t> budget;
     bool budget_hit = false;
     Random_engine engine;
     Point_sink sink;
+    /// Empty: candidates are kept as they are (unverified).
+    Verifier verifier;
 
     Query_state(std::uint64_t seed, std::optional<std::size_t> max_f, bool first_hit, double spacing,
                 std::vector<Intersection_point>& out)
@@ -130,6 +137,19 @@ struct Query_state {
     }
     /// The query should stop: first hit found or budget spent.
     bool stop() { return sink.done() || out_of_budget(); }
+
+    /// A candidate point found by a policy: verified (when a verifier is set) and, if it passes,
+    /// added to the sink. Returns true when a point was kept.
+    bool offer(const Intersection_point& candidate)
+    {
+        if (!verifier) return sink.add(candidate);
+        const std::optional<Intersection_point> contact = verifier(candidate);
+        if (!contact) {
+            ++counters.candidates_rejected;
+            return false;
+        }
+        return sink.add(*contact);
+    }
 
     /// f of `target` at the world point x, counted.
     template <class Object>

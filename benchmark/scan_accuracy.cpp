@@ -1,0 +1,86 @@
+// Accuracy on scans: false negatives and false positives of do_intersect() (both policies) and of
+// the naive point test on clouds with noise, lower density and outliers, against CGAL's exact
+// verdict; the curve distances of intersection_points(). The table of doc/benchmarks.md "Accuracy
+// on scans" comes from
+//   build/benchmark/scan_accuracy --rotations 50
+// (test_scan_validation runs the same code with fewer poses and asserts the acceptance figures).
+#include "../test/scan_validation.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+int main(int argc, char** argv)
+{
+    CLI::App app{"Accuracy of PCCD's first-hit and curve queries on scan-like clouds, beside the naive point test"};
+    std::string data_dir = PCCD_DATA_DIR;
+    std::vector<std::string> models{"bunny00.off", "elephant.off"};
+    std::size_t rotations = 20, points = 30000, curve_poses = 20;
+    std::vector<std::size_t> conditions;
+    bool verbose = false;
+    PCCD::Point_cloud_object_options object_options;
+    PCCD::Intersection_options query_options;
+    std::uint64_t pose_seed = 1;
+    app.add_option("--data", data_dir, "folder of the meshes (libcgal-demo's data/meshes)");
+    app.add_option("--models", models, "mesh files in that folder (closed meshes)");
+    app.add_option("--rotations", rotations, "rotations per distance (13 distances, 0 to 3)");
+    app.add_option("--points", points, "points of the clean cloud");
+    app.add_option("--curve-poses", curve_poses, "intersecting poses for the curve figures (0: none)");
+    app.add_option("--conditions", conditions, "indices of the conditions to run (default: all)");
+    app.add_option("--pose-seed", pose_seed, "seed of the poses");
+    app.add_flag("--verbose", verbose, "print every wrong non-grazing answer");
+    app.add_option("--eta", object_options.bandwidth.eta, "kernel support in sampling radii");
+    app.add_option("--domain-factor", object_options.domain.factor, "domain radius in k-th neighbour distances");
+    app.add_option("--domain-neighbors", object_options.domain.neighbors, "k of the domain radius");
+    double tolerance = 0.0;
+    app.add_option("--contact-tolerance", tolerance, "verification tolerance in sampling radii (default: automatic)");
+    bool no_domain = false, no_verify = false;
+    app.add_flag("--no-domain", no_domain, "surfaces without a domain");
+    app.add_flag("--no-verify", no_verify, "unverified contacts (the published methods)");
+    CLI11_PARSE(app, argc, argv);
+    if (data_dir.empty()) {
+        std::fprintf(stderr, "scan_accuracy: no mesh folder (install libcgal-demo or pass --data)\n");
+        return 1;
+    }
+    object_options.domain.enabled = !no_domain;
+    query_options.verify_contacts = !no_verify;
+    const auto all = pccd_test::scan_conditions();
+    if (conditions.empty())
+        for (std::size_t i = 0; i < all.size(); ++i) conditions.push_back(i);
+
+    std::vector<pccd_test::Scan_row> rows;
+    std::vector<std::string> curve_lines;
+    for (const std::string& file : models) {
+        const pccd_test::Scan_model model = pccd_test::load_scan_model(data_dir, file, points, 2026);
+        const auto truth = pccd_test::exact_truth(model, rotations, pose_seed);
+        if (tolerance > 0.0) query_options.contact_tolerance = tolerance * model.clean_r;
+        std::printf("%s: clean spacing %.5f, r %.5f, %zu poses\n", file.c_str(), model.clean_spacing, model.clean_r,
+                    truth.size());
+        for (std::size_t c : conditions) {
+            const pccd_test::Scan_condition& condition = all.at(c);
+            const pccd_test::Scan_cloud cloud = pccd_test::make_scan_cloud(model, condition, 2026 + c, object_options);
+            rows.push_back(pccd_test::evaluate_first_hits(model, condition, cloud, truth, verbose, query_options));
+            pccd_test::print_scan_table_header();
+            pccd_test::print_scan_row(rows.back());
+            if (curve_poses > 0) {
+                const auto f = pccd_test::evaluate_curves(model, cloud, truth, curve_poses, query_options);
+                char line[256];
+                std::snprintf(line, sizeof line,
+                              "%-14s %-24s curves: %zu poses, %zu points, distance median %.3f p95 %.3f max %.3f "
+                              "spacings, coverage %.1f %%",
+                              file.c_str(), condition.name.c_str(), f.poses, f.points, f.median, f.p95, f.max,
+                              100.0 * f.coverage);
+                std::printf("%s\n", line);
+                curve_lines.push_back(line);
+            }
+            std::fflush(stdout);
+        }
+    }
+    std::printf("\nsummary (%zu rotations x 13 distances per model)\n", rotations);
+    pccd_test::print_scan_table_header();
+    for (const auto& r : rows) pccd_test::print_scan_row(r);
+    for (const auto& l : curve_lines) std::printf("%s\n", l.c_str());
+    return 0;
+}

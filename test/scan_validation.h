@@ -1,0 +1,326 @@
+// Accuracy of first-hit and curve queries on clouds that look like scans, against CGAL's exact
+// answer and next to the naive point test on the very same clouds. Shared by the validation test
+// (test_scan_validation.cpp) and the benchmark program (benchmark/scan_accuracy.cpp), which print
+// the same table; doc/benchmarks.md "Accuracy on scans" explains it.
+//
+// For each closed scanned mesh (normalized into [-1, 1]^3) and each cloud condition, one cloud is
+// drawn uniformly by area from the mesh and preprocessed once; the benchmark pose procedure (two
+// copies, random rotations, B translated by d along x) poses it against itself. The truth of a pose
+// is CGAL's exact verdict on the meshes; a pose whose exact separation or penetration is below one
+// sampling radius r of the clean cloud is grazing and counted apart.
+#pragma once
+
+#include <PCCD/Exact/Exact_mesh.h>
+#include <PCCD/Exact/mesh_intersection.h>
+#include <PCCD/Exact/mesh_separation.h>
+#include <PCCD/IO/read_triangle_mesh.h>
+#include <PCCD/Intersection/do_intersect.h>
+#include <PCCD/Point_cloud_object.h>
+#include <PCCD/Sampling/normalize.h>
+#include <PCCD/Sampling/pose_generator.h>
+#include <PCCD/Sampling/sample_triangle_mesh.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace pccd_test {
+
+/// One way a scan differs from clean mesh vertices.
+struct Scan_condition {
+    std::string name;
+    /// Points drawn per cloud, as a fraction of the clean cloud's count.
+    double density = 1.0;
+    /// Gaussian noise per coordinate, in mean spacings of the clean cloud.
+    double noise = 0.0;
+    /// Uniform outliers in the mesh's bounding box, as a fraction of the point count.
+    double outliers = 0.0;
+};
+
+/// The conditions of the validation: clean, noise 0.3 and 0.6 spacings, a quarter of the density,
+/// 1 % outliers with noise 0.2 spacings.
+inline std::vector<Scan_condition> scan_conditions()
+{
+    return {{"clean", 1.0, 0.0, 0.0},
+            {"noise 0.3", 1.0, 0.3, 0.0},
+            {"noise 0.6", 1.0, 0.6, 0.0},
+            {"quarter density", 0.25, 0.0, 0.0},
+            {"1% outliers + noise 0.2", 1.0, 0.2, 0.01}};
+}
+
+/// A closed mesh, its exact reference, and the spacing and sampling radius of its clean cloud.
+struct Scan_model {
+    std::string name;
+    PCCD::Triangle_mesh_data mesh;
+    std::unique_ptr<PCCD::Exact_mesh> exact;
+    std::size_t clean_points = 0;
+    double clean_spacing = 0.0;
+    double clean_r = 0.0;
+};
+
+/// One cloud of a model under a condition, preprocessed.
+struct Scan_cloud {
+    std::unique_ptr<PCCD::Point_cloud_object<>> object;
+    /// The points as drawn (outliers included): what the naive test sees.
+    std::unique_ptr<PCCD::Point_cloud<>> raw;
+    double spacing = 0.0; // mean spacing of the raw cloud
+    double preprocessing_ms = 0.0;
+};
+
+inline std::vector<Eigen::Vector3d> columns(const Eigen::Matrix3Xd& m)
+{
+    std::vector<Eigen::Vector3d> out(std::size_t(m.cols()));
+    for (Eigen::Index i = 0; i < m.cols(); ++i) out[std::size_t(i)] = m.col(i);
+    return out;
+}
+
+/// Loads `dir/file`, normalizes it into [-1, 1]^3 and measures its clean cloud of `points` points
+/// (seed `seed`).
+inline Scan_model load_scan_model(const std::string& dir, const std::string& file, std::size_t points, std::uint64_t seed)
+{
+    Scan_model m;
+    m.name = file;
+    m.mesh = PCCD::IO::read_triangle_mesh(dir + "/" + file);
+    Eigen::Matrix3Xd v(3, Eigen::Index(m.mesh.vertices.size()));
+    for (std::size_t i = 0; i < m.mesh.vertices.size(); ++i) v.col(Eigen::Index(i)) = m.mesh.vertices[i];
+    PCCD::normalize_to_unit_cube(v);
+    for (std::size_t i = 0; i < m.mesh.vertices.size(); ++i) m.mesh.vertices[i] = v.col(Eigen::Index(i));
+    m.exact = std::make_unique<PCCD::Exact_mesh>(m.mesh);
+    m.clean_points = points;
+    PCCD::Random_engine engine(seed);
+    const auto sample = PCCD::sample_triangle_mesh(m.mesh.vertices, m.mesh.triangles, points, engine);
+    const PCCD::Point_cloud<> cloud(sample.points);
+    m.clean_spacing = cloud.mean_spacing();
+    m.clean_r = PCCD::sampling_radius(cloud);
+    return m;
+}
+
+/// The cloud of `model` under `condition` (seed `seed`; the clean condition with the model's seed
+/// gives the model's clean cloud).
+inline Scan_cloud make_scan_cloud(const Scan_model& model, const Scan_condition& condition, std::uint64_t seed,
+                                  const PCCD::Point_cloud_object_options& options = {})
+{
+    PCCD::Random_engine engine(seed);
+    const std::size_t n = std::max<std::size_t>(16, std::size_t(std::llround(condition.density * double(model.clean_points))));
+    const auto sample = PCCD::sample_triangle_mesh(model.mesh.vertices, model.mesh.triangles, n, engine,
+                                                   {.noise_sigma = condition.noise * model.clean_spacing});
+    std::vector<Eigen::Vector3d> points = columns(sample.points);
+    if (condition.outliers > 0.0) {
+        Eigen::AlignedBox3d box;
+        for (const auto& p : model.mesh.vertices) box.extend(p);
+        const std::size_t k = std::size_t(std::llround(condition.outliers * double(n)));
+        for (std::size_t i = 0; i < k; ++i) {
+            Eigen::Vector3d p;
+            for (int d = 0; d < 3; ++d) p(d) = PCCD::uniform_real(engine, box.min()(d), box.max()(d));
+            points.push_back(p);
+        }
+    }
+    Scan_cloud c;
+    const auto start = std::chrono::steady_clock::now();
+    c.object = std::make_unique<PCCD::Point_cloud_object<>>(points, PCCD::Identity_point_map<Eigen::Vector3d>(), options);
+    c.preprocessing_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    c.raw = std::make_unique<PCCD::Point_cloud<>>(points);
+    c.spacing = c.raw->mean_spacing();
+    return c;
+}
+
+/// The naive test users write: the posed clouds collide iff some point of B lies within `radius`
+/// of a point of A (here: one mean spacing of A).
+inline bool naive_point_test(const PCCD::Point_cloud<>& a, const PCCD::Rigid_transform_3<double>& pose_a,
+                             const PCCD::Point_cloud<>& b, const PCCD::Rigid_transform_3<double>& pose_b, double radius)
+{
+    const PCCD::Rigid_transform_3<double> b_to_a = pose_a.inverse() * pose_b;
+    Eigen::AlignedBox3d box_a = a.bbox();
+    box_a.min().array() -= radius;
+    box_a.max().array() += radius;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        const Eigen::Vector3d q = b_to_a.transform_point(b.position(std::uint32_t(i)).template cast<double>());
+        if (!box_a.contains(q)) continue;
+        if (double(a.nearest(q).squared_distance) <= radius * radius) return true;
+    }
+    return false;
+}
+
+/// False negatives and positives of one method over poses.
+struct Error_tally {
+    std::size_t intersecting = 0, separated = 0, grazing = 0;
+    std::size_t false_negatives = 0, false_positives = 0, grazing_reported = 0;
+    double fn_rate() const { return intersecting ? double(false_negatives) / double(intersecting) : 0.0; }
+    double fp_rate() const { return separated ? double(false_positives) / double(separated) : 0.0; }
+    void add(PCCD::Pose_class cls, bool answer)
+    {
+        if (cls == PCCD::Pose_class::grazing) {
+            ++grazing;
+            grazing_reported += answer;
+        } else if (cls == PCCD::Pose_class::intersecting) {
+            ++intersecting;
+            false_negatives += !answer;
+        } else {
+            ++separated;
+            false_positives += answer;
+        }
+    }
+};
+
+/// The exact verdicts of the poses of one model (computed once, shared by every condition).
+struct Posed_truth {
+    PCCD::Benchmark_pose pose;
+    PCCD::Exact_separation separation;
+    PCCD::Pose_class cls;
+};
+
+inline std::vector<Posed_truth> exact_truth(const Scan_model& model, std::size_t rotations, std::uint64_t seed)
+{
+    std::vector<Posed_truth> out;
+    for (const auto& pose : PCCD::generate_benchmark_poses({.rotations_per_distance = rotations, .seed = seed})) {
+        const auto separation = PCCD::exact_separation(*model.exact, pose.pose_a, *model.exact, pose.pose_b);
+        out.push_back({pose, separation, PCCD::classify_pose(separation, model.clean_r)});
+    }
+    return out;
+}
+
+/// One row of the table: a model under a condition.
+struct Scan_row {
+    std::string model, condition;
+    std::size_t points = 0;
+    Error_tally isearch, rst, naive;
+    double isearch_mean_us = 0.0, rst_mean_us = 0.0;
+    std::size_t isearch_rejected = 0, rst_rejected = 0;
+};
+
+inline double us_since(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// Runs both policies and the naive test on every pose of `truth`; prints each wrong non-grazing
+/// answer when `verbose`.
+inline Scan_row evaluate_first_hits(const Scan_model& model, const Scan_condition& condition, const Scan_cloud& cloud,
+                                    const std::vector<Posed_truth>& truth, bool verbose,
+                                    PCCD::Intersection_options options = {})
+{
+    Scan_row row;
+    row.model = model.name;
+    row.condition = condition.name;
+    row.points = cloud.object->size();
+    const PCCD::Point_cloud_object<>& o = *cloud.object;
+    double t_is = 0.0, t_rst = 0.0;
+    std::size_t k = 0;
+    for (const Posed_truth& t : truth) {
+        options.seed = 1000 + k++;
+        auto start = std::chrono::steady_clock::now();
+        const auto is = PCCD::do_intersect(o, t.pose.pose_a, o, t.pose.pose_b, options);
+        t_is += us_since(start);
+        start = std::chrono::steady_clock::now();
+        const auto rst = PCCD::do_intersect(o, t.pose.pose_a, o, t.pose.pose_b, options, PCCD::Randomized_sampling{});
+        t_rst += us_since(start);
+        const bool naive = naive_point_test(*cloud.raw, t.pose.pose_a, *cloud.raw, t.pose.pose_b, cloud.spacing);
+        row.isearch_rejected += is.counters.candidates_rejected;
+        row.rst_rejected += rst.counters.candidates_rejected;
+        row.isearch.add(t.cls, is.intersects);
+        row.rst.add(t.cls, rst.intersects);
+        row.naive.add(t.cls, naive);
+        if (verbose && t.cls != PCCD::Pose_class::grazing) {
+            const bool truth_answer = t.cls == PCCD::Pose_class::intersecting;
+            if (is.intersects != truth_answer || rst.intersects != truth_answer || naive != truth_answer)
+                std::printf("    %s / %s: d = %.2f rot %zu exact %+.3f r: isearch %d rst %d naive %d\n", model.name.c_str(),
+                            condition.name.c_str(), t.pose.distance, t.pose.rotation_index,
+                            t.separation.signed_measure() / model.clean_r, int(is.intersects), int(rst.intersects),
+                            int(naive));
+        }
+    }
+    row.isearch_mean_us = t_is / double(std::max<std::size_t>(1, truth.size()));
+    row.rst_mean_us = t_rst / double(std::max<std::size_t>(1, truth.size()));
+    return row;
+}
+
+inline void print_scan_table_header()
+{
+    std::printf("%-14s %-24s %7s | %-15s %-15s | %-15s %-15s | %-15s %-15s | %9s %9s\n", "model", "condition", "points",
+                "isearch FN", "isearch FP", "rst FN", "rst FP", "naive FN", "naive FP", "is. us", "rst us");
+}
+
+inline void print_scan_row(const Scan_row& r)
+{
+    const auto cell = [](std::size_t k, std::size_t n) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%zu/%zu %.1f%%", k, n, n ? 100.0 * double(k) / double(n) : 0.0);
+        return std::string(buf);
+    };
+    std::printf("%-14s %-24s %7zu | %-15s %-15s | %-15s %-15s | %-15s %-15s | %9.1f %9.1f\n", r.model.c_str(),
+                r.condition.c_str(), r.points, cell(r.isearch.false_negatives, r.isearch.intersecting).c_str(),
+                cell(r.isearch.false_positives, r.isearch.separated).c_str(),
+                cell(r.rst.false_negatives, r.rst.intersecting).c_str(), cell(r.rst.false_positives, r.rst.separated).c_str(),
+                cell(r.naive.false_negatives, r.naive.intersecting).c_str(),
+                cell(r.naive.false_positives, r.naive.separated).c_str(), r.isearch_mean_us, r.rst_mean_us);
+}
+
+inline double point_segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+    const Eigen::Vector3d ab = b - a;
+    const double len2 = ab.squaredNorm();
+    const double t = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+    return (p - (a + t * ab)).norm();
+}
+
+/// Distances of intersection_points() to the exact polylines, in mean spacings of the clean cloud,
+/// and the coverage of the exact curves (samples every half spacing with a point within 3 spacings).
+struct Curve_figures {
+    std::size_t poses = 0, points = 0;
+    double median = 0.0, p95 = 0.0, max = 0.0, coverage = 0.0;
+};
+
+inline Curve_figures evaluate_curves(const Scan_model& model, const Scan_cloud& cloud, const std::vector<Posed_truth>& truth,
+                                     std::size_t max_poses, PCCD::Intersection_options options = {})
+{
+    const double s = model.clean_spacing;
+    std::vector<double> errors;
+    std::size_t curve_samples = 0, covered = 0;
+    Curve_figures f;
+    for (std::size_t k = 0; k < truth.size() && f.poses < max_poses; ++k) {
+        const Posed_truth& t = truth[(k * 7) % truth.size()];
+        if (t.cls != PCCD::Pose_class::intersecting) continue;
+        ++f.poses;
+        const auto polylines = PCCD::exact_intersection_polylines(*model.exact, t.pose.pose_a, *model.exact, t.pose.pose_b);
+        options.seed = k;
+        const auto result = PCCD::intersection_points(*cloud.object, t.pose.pose_a, *cloud.object, t.pose.pose_b, options);
+        f.points += result.points.size();
+        for (const auto& p : result.points) {
+            double best = std::numeric_limits<double>::infinity();
+            for (const auto& line : polylines)
+                for (std::size_t i = 0; i + 1 < line.size(); ++i)
+                    best = std::min(best, point_segment_distance(p.position, line[i], line[i + 1]));
+            errors.push_back(best / s);
+        }
+        for (const auto& line : polylines)
+            for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+                const double length = (line[i + 1] - line[i]).norm();
+                const std::size_t steps = std::max<std::size_t>(1, std::size_t(std::ceil(length / (0.5 * s))));
+                for (std::size_t j = 0; j < steps; ++j) {
+                    const Eigen::Vector3d c = line[i] + (double(j) / double(steps)) * (line[i + 1] - line[i]);
+                    ++curve_samples;
+                    for (const auto& p : result.points)
+                        if ((p.position - c).norm() <= 3.0 * s) {
+                            ++covered;
+                            break;
+                        }
+                }
+            }
+    }
+    if (!errors.empty()) {
+        std::sort(errors.begin(), errors.end());
+        f.median = errors[errors.size() / 2];
+        f.p95 = errors[std::min(errors.size() - 1, errors.size() * 95 / 100)];
+        f.max = errors.back();
+    }
+    f.coverage = curve_samples ? double(covered) / double(curve_samples) : 0.0;
+    return f;
+}
+
+} // namespace pccd_test
