@@ -1,11 +1,13 @@
 // Tests of the normal orientation (ALGORITHMS.md section 1): Hoppe's MST propagation over any
 // ProximityGraph model (here a boost::adjacency_list k-NN graph built by brute force), the outward
-// choice per component, orientation like given normals, and the bunny scan against its mesh normals.
+// choice per component, orientation like given normals, the bunny scan against its mesh normals,
+// and orientation with hints (some normals given, some missing) against analytic sphere normals.
 #include "surface_test_helpers.h"
 
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Proximity_graph/graph_components.h>
+#include <PCCD/Proximity_graph/sphere_of_influence_graph.h>
 #include <PCCD/Surface/orient_normals.h>
 
 #include <boost/graph/adjacency_list.hpp>
@@ -13,6 +15,8 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -162,4 +166,210 @@ TEST_CASE("oriented normals of the bunny scan agree with its mesh normals", "[su
     CHECK(fraction >= 0.999);
     // The bunny is a closed-looking scan: its largest component faces outward as a whole.
     CHECK(vote[components.label[0]] > 0.0);
+}
+
+namespace {
+
+/// The unit sphere's analytic outward normal at each point (independent of any fit).
+Eigen::Matrix3Xd outward_normals(const Eigen::Matrix3Xd& points, const Eigen::Vector3d& centre = Eigen::Vector3d::Zero())
+{
+    Eigen::Matrix3Xd out = points.colwise() - centre;
+    out.colwise().normalize();
+    return out;
+}
+
+/// Unoriented normals as a fit would give them: the truth perturbed by noise, each with a random sign.
+Eigen::Matrix3Xd unoriented(const Eigen::Matrix3Xd& truth, std::uint64_t seed)
+{
+    PCCD::Random_engine engine(seed);
+    Eigen::Matrix3Xd out = truth;
+    for (Eigen::Index i = 0; i < out.cols(); ++i) {
+        for (int d = 0; d < 3; ++d) out(d, i) += 0.05 * PCCD::standard_normal(engine);
+        out.col(i).normalize();
+        if (PCCD::uniform_01(engine) < 0.5) out.col(i) = -out.col(i);
+    }
+    return out;
+}
+
+/// Hints for a random `fraction` of the points: `sign` times the truth, perturbed and scaled by a
+/// random positive factor (hints need not be unit vectors); the other points get no hint, as zero
+/// columns, and every fifth of them as a NaN column. `hinted` receives how many points have a hint.
+Eigen::Matrix3Xd random_hints(const Eigen::Matrix3Xd& truth, double fraction, double sign, std::uint64_t seed,
+                              std::size_t& hinted)
+{
+    PCCD::Random_engine engine(seed);
+    Eigen::Matrix3Xd hints = Eigen::Matrix3Xd::Zero(3, truth.cols());
+    hinted = 0;
+    std::size_t missing = 0;
+    for (Eigen::Index i = 0; i < truth.cols(); ++i) {
+        if (PCCD::uniform_01(engine) < fraction) {
+            Eigen::Vector3d h = truth.col(i);
+            for (int d = 0; d < 3; ++d) h(d) += 0.2 * PCCD::standard_normal(engine);
+            hints.col(i) = sign * PCCD::uniform_real(engine, 0.1, 10.0) * h;
+            ++hinted;
+        } else if (++missing % 5 == 0) {
+            hints(1, i) = std::numeric_limits<double>::quiet_NaN();
+        }
+    }
+    return hints;
+}
+
+/// Number of columns of `normals` whose sign disagrees with `sign` times the truth (or that are zero).
+std::size_t disagreeing(const Eigen::Matrix3Xd& normals, const Eigen::Matrix3Xd& truth, double sign)
+{
+    std::size_t count = 0;
+    for (Eigen::Index i = 0; i < normals.cols(); ++i)
+        if (!(sign * normals.col(i).dot(truth.col(i)) > 0.0)) ++count;
+    return count;
+}
+
+/// Marks the edges of an Adjacency_graph longer than `limit` as virtual (a model of EdgeFlagMap).
+struct Long_edges {
+    const Adjacency_graph* graph;
+    double limit;
+    friend bool get(const Long_edges& m, const Adjacency_graph::edge_descriptor& e)
+    {
+        return boost::get(boost::edge_weight, *m.graph, e) > m.limit;
+    }
+};
+
+} // namespace
+
+TEST_CASE("hints decide the sign where they exist and propagation decides it elsewhere", "[surface]")
+{
+    const auto sample = sample_shape(unit_sphere(), 2000, 0.0, 81);
+    const Eigen::Matrix3Xd truth = outward_normals(sample.points);
+    const Adjacency_graph g = brute_force_knn_graph(sample.points, 10);
+    const Eigen::Matrix3Xd fitted = unoriented(truth, 82);
+    for (const double fraction : {0.1, 0.5, 0.0, 1.0}) {
+        for (const double sign : {1.0, -1.0}) {
+            if (fraction == 0.0 && sign < 0.0) continue; // no hint: nothing can point inward
+            INFO("fraction of hinted points " << fraction << ", hints " << (sign > 0 ? "outward" : "inward"));
+            std::size_t hinted = 0;
+            const Eigen::Matrix3Xd hints = random_hints(truth, fraction, sign, 83 + std::uint64_t(100 * fraction), hinted);
+            Eigen::Matrix3Xd normals = fitted;
+            const PCCD::Orientation_report report = PCCD::orient_normals_with_hints(g, sample.points, normals, hints);
+            // Every normal agrees with the hints' side; a component without hints faces outward.
+            CHECK(disagreeing(normals, truth, sign) == 0);
+            CHECK(report.hints_used == hinted);
+            CHECK(report.hints_ignored == std::size_t(truth.cols()) - hinted);
+            CHECK(report.unoriented == 0);
+            CHECK(report.components == (hinted == std::size_t(truth.cols()) ? 0u : 1u));
+            CHECK(report.unhinted_components == (hinted == 0 ? 1u : 0u));
+            std::size_t reversed = 0;
+            for (Eigen::Index i = 0; i < normals.cols(); ++i) {
+                CHECK(normals.col(i).cwiseAbs() == fitted.col(i).cwiseAbs()); // signs only
+                reversed += normals.col(i).dot(fitted.col(i)) < 0.0;
+            }
+            CHECK(report.flipped == reversed);
+            // Deterministic.
+            Eigen::Matrix3Xd again = fitted;
+            PCCD::orient_normals_with_hints(g, sample.points, again, hints);
+            CHECK(again == normals);
+        }
+    }
+}
+
+TEST_CASE("orientation with hints reduces to orient_normals without hints and to orient_normals_like with all",
+          "[surface]")
+{
+    const auto sample = sample_shape(test_torus(), 2000, 0.3, 91);
+    const Eigen::Matrix3Xd fitted = unoriented(sample.normals, 92);
+    const Adjacency_graph g = brute_force_knn_graph(sample.points, 10);
+    Eigen::Matrix3Xd propagated = fitted;
+    const PCCD::Orientation_report plain = PCCD::orient_normals(g, sample.points, propagated);
+    // No hints: an empty matrix, zero columns, or NaN columns.
+    Eigen::Matrix3Xd nan_hints = Eigen::Matrix3Xd::Zero(3, 2000);
+    nan_hints.row(2).setConstant(std::numeric_limits<double>::quiet_NaN());
+    for (const Eigen::Matrix3Xd& hints : {Eigen::Matrix3Xd(3, 0), Eigen::Matrix3Xd(Eigen::Matrix3Xd::Zero(3, 2000)), nan_hints}) {
+        Eigen::Matrix3Xd normals = fitted;
+        const PCCD::Orientation_report report = PCCD::orient_normals_with_hints(g, sample.points, normals, hints);
+        CHECK(normals == propagated);
+        CHECK(report.flipped == plain.flipped);
+        CHECK(report.components == plain.components);
+        CHECK(report.unhinted_components == plain.components);
+        CHECK(report.unoriented == plain.unoriented);
+        CHECK(report.hints_used == 0);
+        CHECK(report.hints_ignored == std::size_t(hints.cols()));
+    }
+    CHECK(plain.hints_used == 0);
+    CHECK(plain.hints_ignored == 0);
+    // A hint everywhere (float hints, pointing inward): the same as orient_normals_like.
+    const Eigen::Matrix3Xf inward = (-sample.normals).cast<float>();
+    Eigen::Matrix3Xd with_hints = fitted, like = fitted;
+    with_hints.col(7).setZero(); // an undetermined fit takes its normalized hint
+    like.col(7).setZero();
+    const PCCD::Orientation_report hinted = PCCD::orient_normals_with_hints(g, sample.points, with_hints, inward);
+    const PCCD::Orientation_report reference = PCCD::orient_normals_like(like, inward);
+    CHECK(with_hints == like);
+    CHECK(hinted.flipped == reference.flipped);
+    CHECK(hinted.components == 0);
+    CHECK(reference.components == 0);
+    CHECK(hinted.hints_used == 2000);
+    CHECK(reference.hints_used == 2000);
+    CHECK(disagreeing(with_hints, sample.normals, -1.0) == 0);
+    CHECK(with_hints.col(7).isApprox(-sample.normals.col(7).normalized(), 1e-6)); // from float hints
+}
+
+TEST_CASE("orientation with hints fills undetermined fits, works per component and ignores virtual edges",
+          "[surface]")
+{
+    // Two unit spheres 5 apart, joined by one long edge marked virtual. Sphere A has inward hints on
+    // 10 % of its points; sphere B has none and faces outward by the rule of orient_normals.
+    const auto a = sample_shape(unit_sphere(), 1000, 0.0, 101);
+    const Eigen::Vector3d shift(5, 0, 0);
+    Eigen::Matrix3Xd points(3, 2000), truth(3, 2000);
+    points << a.points, (a.points.colwise() + shift);
+    truth << outward_normals(a.points), outward_normals(a.points);
+    Adjacency_graph g = brute_force_knn_graph(points, 8);
+    boost::add_edge(0, 1001, 4.0, g); // longer than any k-NN edge: marked virtual
+    const Long_edges is_virtual{&g, 3.0};
+    Eigen::Matrix3Xd normals = unoriented(truth, 102);
+    std::size_t hinted = 0;
+    Eigen::Matrix3Xd hints = Eigen::Matrix3Xd::Zero(3, 2000);
+    hints.leftCols(1000) = random_hints(truth.leftCols(1000), 0.1, -1.0, 103, hinted);
+    // Point 0 is hinted and has no fit of its own (it takes the hint); point 1 has neither (stays
+    // zero); point 1000 has neither a hint nor a fit (stays zero, on sphere B).
+    hints.col(0) = Eigen::Vector3d(-3.0 * truth.col(0));
+    normals.col(0).setZero();
+    hints.col(1).setZero();
+    normals.col(1).setZero();
+    normals.col(1000).setZero();
+    std::size_t expected_hints = 0;
+    for (Eigen::Index i = 0; i < 2000; ++i) expected_hints += !hints.col(i).isZero(0.0) && std::isfinite(hints(1, i));
+    const PCCD::Orientation_report report = PCCD::orient_normals_with_hints(g, points, normals, hints, is_virtual);
+    CHECK(report.components == 2);
+    CHECK(report.unhinted_components == 1);
+    CHECK(report.unoriented == 2);
+    CHECK(report.hints_used == expected_hints);
+    CHECK(report.hints_ignored == 2000 - expected_hints);
+    CHECK(normals.col(0).isApprox(-truth.col(0)));
+    CHECK(normals.col(1).isZero(0.0));
+    CHECK(normals.col(1000).isZero(0.0));
+    for (Eigen::Index i = 0; i < 2000; ++i) {
+        if (i == 1 || i == 1000) continue;
+        const double sign = i < 1000 ? -1.0 : 1.0;
+        CHECK(sign * normals.col(i).dot(truth.col(i)) > 0.0);
+    }
+    // Errors: hints not one per point; a non-finite normal (hints never are an error).
+    Eigen::Matrix3Xd copy = unoriented(truth, 104);
+    CHECK_THROWS_WITH(PCCD::orient_normals_with_hints(g, points, copy, Eigen::Matrix3Xd::Ones(3, 1999)),
+                      Catch::Contains("1999 hints for 2000 points"));
+    copy(0, 5) = std::numeric_limits<double>::infinity();
+    CHECK_THROWS_WITH(PCCD::orient_normals_with_hints(g, points, copy, hints), Catch::Contains("normal 5"));
+}
+
+TEST_CASE("orientation with hints over a Proximity_graph orients a sphere from a few hints", "[surface]")
+{
+    const auto sample = sample_shape(unit_sphere(), 3000, 0.2, 111);
+    const PCCD::Point_cloud<> cloud(sample.points);
+    const PCCD::Proximity_graph graph = PCCD::sphere_of_influence_graph(cloud);
+    const Eigen::Matrix3Xd truth = outward_normals(sample.points);
+    std::size_t hinted = 0;
+    const Eigen::Matrix3Xd hints = random_hints(truth, 0.01, -1.0, 112, hinted);
+    REQUIRE(hinted > 0);
+    Eigen::Matrix3Xd normals = unoriented(truth, 113);
+    const PCCD::Orientation_report report = PCCD::orient_normals_with_hints(graph, cloud.coordinates(), normals, hints);
+    CHECK(disagreeing(normals, truth, -1.0) == 0);
+    CHECK(report.hints_used == hinted);
 }

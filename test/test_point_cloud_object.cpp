@@ -8,9 +8,21 @@
 
 #include <cmath>
 #include <fstream>
+#include <numeric>
 #include <string>
+#include <vector>
 
 using namespace pccd_test;
+
+namespace {
+
+/// A readable property map from an index to a row of a table (points or normals).
+struct Table_map {
+    const std::vector<Eigen::Vector3d>* rows;
+    friend const Eigen::Vector3d& get(const Table_map& m, std::size_t i) { return (*m.rows)[i]; }
+};
+
+} // namespace
 
 TEST_CASE("the CPSP map's default bound is the surface's default support", "[surface]")
 {
@@ -107,4 +119,54 @@ TEST_CASE("a point cloud object from a point file's data uses its normals when i
     // Normals, but not one per point.
     data.normals.pop_back();
     CHECK_THROWS_AS(PCCD::Point_cloud_object<>(data), PCCD::Invalid_input);
+}
+
+TEST_CASE("a point cloud object takes a file's normals as hints: zero or NaN normals are missing ones", "[surface]")
+{
+    const auto sample = sample_shape(unit_sphere(), 1500, 0.0, 98);
+    PCCD::Point_data data;
+    data.points = columns(sample.points);
+    const PCCD::Point_cloud_object<> from_points(data.points);
+    // Every normal zero (as in files that store 0 0 0 for "unknown"): the object is built as without
+    // normals, the normals propagated over the graph and facing outward.
+    data.normals.assign(data.points.size(), Eigen::Vector3d::Zero());
+    const PCCD::Point_cloud_object<> all_zero(data);
+    CHECK(all_zero.normals_given());
+    CHECK(all_zero.normals() == from_points.normals());
+    CHECK(all_zero.orientation().hints_used == 0);
+    CHECK(all_zero.orientation().hints_ignored == data.points.size());
+    CHECK(all_zero.orientation().unhinted_components == all_zero.orientation().components);
+    CHECK(all_zero.orientation().flipped == from_points.orientation().flipped);
+    // Every 7th point with an inward normal (of any length), every 11th of the others NaN, the rest
+    // zero: every normal of the object points inward, the hints' side, against the outward rule.
+    std::size_t given = 0;
+    for (std::size_t i = 0; i < data.points.size(); ++i) {
+        if (i % 7 == 0) {
+            data.normals[i] = -(0.5 + double(i % 5)) * data.points[i];
+            ++given;
+        } else if (i % 11 == 0) {
+            data.normals[i] = Eigen::Vector3d(std::nan(""), 0.0, 1.0);
+        }
+    }
+    // The same through the constructor with a normal map (items are indices into the tables).
+    std::vector<std::size_t> items(data.points.size());
+    std::iota(items.begin(), items.end(), std::size_t(0));
+    for (const PCCD::Point_cloud_object<>& object :
+         {PCCD::Point_cloud_object<>(data),
+          PCCD::Point_cloud_object<>(items, Table_map{&data.points}, Table_map{&data.normals})}) {
+        CHECK(object.normals_given());
+        CHECK(object.orientation().hints_used == given);
+        CHECK(object.orientation().hints_ignored == data.points.size() - given);
+        CHECK(object.orientation().unhinted_components == 0);
+        CHECK(object.orientation().unoriented == 0);
+        std::size_t inward = 0;
+        for (Eigen::Index i = 0; i < object.normals().cols(); ++i)
+            inward += object.normals().col(i).dot(data.points[std::size_t(i)]) < 0.0;
+        CHECK(inward == data.points.size());
+        // f has the sign the hints chose: positive inside the sphere, negative outside.
+        REQUIRE(object.surface().value(Eigen::Vector3d(0.0, 0.0, 0.95)).has_value());
+        CHECK(*object.surface().value(Eigen::Vector3d(0.0, 0.0, 0.95)) > 0.0);
+        REQUIRE(object.surface().value(Eigen::Vector3d(0.0, 0.0, 1.05)).has_value());
+        CHECK(*object.surface().value(Eigen::Vector3d(0.0, 0.0, 1.05)) < 0.0);
+    }
 }

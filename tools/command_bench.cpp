@@ -129,7 +129,7 @@ void run_bench(const Bench_options& o)
 
     std::string description;
     const Object_points points = load_bench_points(o, description);
-    const Prepared_object prepared = prepare_object(points);
+    const Prepared_object prepared = prepare_object(points, o.file);
     const PCCD::Point_cloud_object<>& object = prepared.object;
     std::printf("object: %s (%s), normalized into [-1,1]^3\n", o.file.c_str(), description.c_str());
     std::printf("preprocessed in %.0f ms: %zu points, r(P) %.5f\n", prepared.preprocess_ms, object.size(),

@@ -195,8 +195,8 @@ void run_collide(const Collide_options& o)
     const Object_points points_a = read_object_points(o.file_a, o.normalize);
     const std::optional<Object_points> points_b =
         same ? std::nullopt : std::optional<Object_points>(read_object_points(o.file_b, o.normalize));
-    const Prepared_object a = prepare_object(points_a);
-    const Prepared_object b = same ? a : prepare_object(*points_b);
+    const Prepared_object a = prepare_object(points_a, o.file_a);
+    const Prepared_object b = same ? a : prepare_object(*points_b, o.file_b);
     const double preprocess_ms = a.preprocess_ms + (same ? 0.0 : b.preprocess_ms);
 
     if (cases) {

@@ -1,7 +1,7 @@
 // pccd eval FILE --at "x y z" [--at ...] [--kernel geodesic|euclidean] [--json]: the implicit
 // surface of a point file at given points (ALGORITHMS.md section 1): f, n(x), a(x), or why f is
-// undefined there. Preprocessing uses Point_cloud_object's defaults; normals are oriented like the
-// file's when it has them.
+// undefined there. Preprocessing uses Point_cloud_object's defaults; the file's normals, when it has
+// them, are hints that orient the surface's normals (zero ones count as missing).
 #include "commands.h"
 
 #include <PCCD/IO/read_points.h>
@@ -81,7 +81,7 @@ void register_eval(CLI::App& app)
         std::vector<Eigen::Vector3d> points;
         for (const std::string& text : *at) points.push_back(parse_point(text));
         const PCCD::Point_data data = PCCD::IO::read_points(*file);
-        const PCCD::Point_cloud_object<> object(data); // normals, when the file has them, orient the object's
+        const PCCD::Point_cloud_object<> object(data); // the file's normals, if any, are hints
         nlohmann::json result;
         result["file"] = *file;
         result["kernel"] = *kernel;

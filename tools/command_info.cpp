@@ -1,25 +1,23 @@
 // pccd info FILE [--json]: what a point file holds and the figures of its cloud (points, bounding
-// box, mean spacing, preprocessing times). Later stages add their figures to the same JSON object.
+// box, mean spacing, and the preprocessed object with the library's defaults: graph, CPSP map,
+// bandwidth, normals and the time of each stage). Later stages add their figures to the same JSON
+// object.
 #include "commands.h"
 
-#include <PCCD/Geodesic/Close_pairs_shortest_paths.h>
 #include <PCCD/IO/read_points.h>
 #include <PCCD/Point_cloud.h>
+#include <PCCD/Point_cloud_object.h>
 #include <PCCD/Proximity_graph/graph_components.h>
-#include <PCCD/Proximity_graph/sphere_of_influence_graph.h>
-#include <PCCD/Surface/Geodesic_distance.h>
-#include <PCCD/Surface/bandwidth.h>
-#include <PCCD/Surface/estimate_normals.h>
-#include <PCCD/Surface/orient_normals.h>
-#include <PCCD/sampling_radius.h>
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <iomanip>
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace pccd_tool {
 namespace {
@@ -33,6 +31,14 @@ double ms_since(Clock::time_point start)
 
 nlohmann::json vector_json(const Eigen::Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
 
+double median_of(const Eigen::VectorXd& v)
+{
+    std::vector<double> values(v.data(), v.data() + v.size());
+    const auto middle = values.begin() + std::ptrdiff_t(values.size() / 2);
+    std::nth_element(values.begin(), middle, values.end());
+    return *middle;
+}
+
 nlohmann::json describe_file(const std::string& path)
 {
     nlohmann::json out;
@@ -42,58 +48,55 @@ nlohmann::json describe_file(const std::string& path)
     out["timings_ms"]["read"] = ms_since(start);
     out["points"] = data.points.size();
     out["normals"] = {{"from_file", data.has_normals()}};
-
-    start = Clock::now();
-    const PCCD::Point_cloud<> cloud(data.points);
-    out["timings_ms"]["kd_tree"] = ms_since(start);
-    out["bbox"] = {{"min", vector_json(cloud.bbox().min())}, {"max", vector_json(cloud.bbox().max())}};
-    if (cloud.size() >= 2) {
+    if (data.points.size() < 2) {
         start = Clock::now();
-        out["mean_spacing"] = cloud.mean_spacing();
-        out["timings_ms"]["mean_spacing"] = ms_since(start);
-        // Geodesic preprocessing with the library defaults (r-SIG, CPSP bound eta r(P)).
-        start = Clock::now();
-        const double radius = PCCD::sampling_radius(cloud);
-        out["timings_ms"]["sampling_radius"] = ms_since(start);
-        out["sampling_radius"] = radius;
-        start = Clock::now();
-        const PCCD::Proximity_graph graph = PCCD::sphere_of_influence_graph(cloud);
-        out["timings_ms"]["graph"] = ms_since(start);
-        out["graph"] = {{"kind", PCCD::to_string(graph.kind(), graph.parameter())},
-                        {"r", graph.parameter()},
-                        {"edges", graph.num_edges()},
-                        {"virtual_edges", graph.num_virtual_edges()},
-                        {"components", PCCD::graph_components(graph).count}};
-        start = Clock::now();
-        const PCCD::Close_pairs_shortest_paths cpsp(graph, radius);
-        out["timings_ms"]["cpsp"] = ms_since(start);
-        out["cpsp"] = {{"entries", cpsp.num_entries()}, {"bytes", cpsp.memory_bytes()}};
-        // Implicit surface (ALGORITHMS.md section 1): default bandwidth, normals oriented like the
-        // file's when it has them, else over the graph.
-        const PCCD::Bandwidth_options bandwidth;
-        const PCCD::Gaussian_weight weight = PCCD::gaussian_weight(radius, bandwidth);
-        out["bandwidth"] = weight.bandwidth();
-        out["eta"] = bandwidth.eta;
-        out["theta_eps"] = weight.threshold();
-        start = Clock::now();
-        // A non-owning handle on the local map (aliasing constructor with an empty owner).
-        const std::shared_ptr<const PCCD::Close_pairs_shortest_paths> map(std::shared_ptr<void>(), &cpsp);
-        PCCD::Normal_estimate estimate = PCCD::estimate_normals(PCCD::Geodesic_distance<>(cloud, map), weight);
-        PCCD::Orientation_report orientation;
-        if (data.has_normals()) {
-            Eigen::Matrix3Xd given(3, Eigen::Index(data.normals.size()));
-            for (std::size_t i = 0; i < data.normals.size(); ++i) given.col(Eigen::Index(i)) = data.normals[i];
-            orientation = PCCD::orient_normals_like(estimate.normals, given);
-        } else {
-            orientation = PCCD::orient_normals(graph, cloud.coordinates(), estimate.normals);
-        }
-        out["timings_ms"]["normals"] = ms_since(start);
-        out["normals"]["flipped"] = orientation.flipped;
-        out["normals"]["components"] = orientation.components;
-        out["normals"]["unoriented"] = orientation.unoriented;
-    } else {
+        const PCCD::Point_cloud<> cloud(data.points);
+        out["timings_ms"]["kd_tree"] = ms_since(start);
+        out["bbox"] = {{"min", vector_json(cloud.bbox().min())}, {"max", vector_json(cloud.bbox().max())}};
         out["mean_spacing"] = nullptr; // undefined for a single point
+        return out;
     }
+    // The object exactly as collide and eval preprocess it (library defaults: r-SIG, CPSP map bounded
+    // at the kernel's support radius, default bandwidth), the file's normals, if any, as hints that
+    // orient the surface's normals where they are not zero.
+    const PCCD::Point_cloud_object_options options;
+    const PCCD::Point_cloud_object<> object(data, options);
+    const PCCD::Point_cloud<>& cloud = object.cloud();
+    const PCCD::Preprocessing_times& t = object.timings();
+    out["timings_ms"]["kd_tree"] = t.kd_tree;
+    out["bbox"] = {{"min", vector_json(cloud.bbox().min())}, {"max", vector_json(cloud.bbox().max())}};
+    start = Clock::now();
+    out["mean_spacing"] = cloud.mean_spacing();
+    out["timings_ms"]["mean_spacing"] = ms_since(start);
+    out["timings_ms"]["sampling_radius"] = t.sampling_radius;
+    out["sampling_radius"] = object.sampling_radius();
+    out["timings_ms"]["graph"] = t.graph;
+    const PCCD::Proximity_graph& graph = object.graph();
+    out["graph"] = {{"kind", PCCD::to_string(graph.kind(), graph.parameter())},
+                    {"r", graph.parameter()},
+                    {"edges", graph.num_edges()},
+                    {"virtual_edges", graph.num_virtual_edges()},
+                    {"components", PCCD::graph_components(graph).count}};
+    out["timings_ms"]["cpsp"] = t.cpsp;
+    out["cpsp"] = {{"entries", object.cpsp().num_entries()}, {"bytes", object.cpsp().memory_bytes()}};
+    out["bandwidth"] = object.bandwidth();
+    out["eta"] = options.bandwidth.eta;
+    out["theta_eps"] = object.theta_eps();
+    out["timings_ms"]["normals"] = t.normals;
+    out["timings_ms"]["hierarchy"] = t.hierarchy;
+    const PCCD::Orientation_report& orientation = object.orientation();
+    out["normals"]["flipped"] = orientation.flipped;
+    out["normals"]["components"] = orientation.components;
+    out["normals"]["unoriented"] = orientation.unoriented;
+    out["normals"]["hints_used"] = orientation.hints_used;
+    out["normals"]["hints_ignored"] = orientation.hints_ignored;
+    out["normals"]["unhinted_components"] = orientation.unhinted_components;
+    // The cloud as a scan: noise estimate, isolated outliers left out, the surface's domain.
+    out["noise"] = {{"sigma", object.noise_estimate()}, {"sigma_in_spacings", object.noise_estimate() / cloud.mean_spacing()}};
+    out["outliers"] = {{"count", object.scan().outliers.size()}, {"input_points", object.scan().input_points}};
+    if (object.domain_radii().size() > 0)
+        out["domain"] = {{"median_radius", median_of(object.domain_radii())}};
+    out["timings_ms"]["outliers_domain"] = t.outliers;
     return out;
 }
 
@@ -112,7 +115,11 @@ void print_text(const nlohmann::json& info)
                   << "cpsp          " << info["cpsp"].dump() << '\n'
                   << "bandwidth     " << info["bandwidth"] << " (eta " << info["eta"] << ", theta_eps "
                   << info["theta_eps"] << ")\n"
-                  << "normals       " << info["normals"].dump() << '\n';
+                  << "normals       " << info["normals"].dump() << '\n'
+                  << "noise         " << info["noise"]["sigma"] << " (" << info["noise"]["sigma_in_spacings"]
+                  << " mean spacings)\n"
+                  << "outliers      " << info["outliers"]["count"] << " of " << info["outliers"]["input_points"]
+                  << " points left out\n";
     for (const auto& [name, ms] : info["timings_ms"].items())
         std::cout << "time " << std::left << std::setw(9) << name << ms.get<double>() << " ms\n";
 }

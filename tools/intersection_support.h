@@ -60,12 +60,18 @@ struct Prepared_object {
     double preprocess_ms;
 };
 
-/// Preprocesses the points with Point_cloud_object's defaults; normals, when present, orient the
-/// object's normals (as `pccd eval` does).
-inline Prepared_object prepare_object(const Object_points& input)
+/// Preprocesses the points with Point_cloud_object's defaults; normals, when present, are hints
+/// that orient the object's normals (as `pccd eval` does).
+/// \throws PCCD::Invalid_input, naming `name`, when no point has a normal: the points are too few
+///         or too degenerate (e.g. all on one line) to make a surface, and every query would answer
+///         "separate" without looking.
+inline Prepared_object prepare_object(const Object_points& input, const std::string& name)
 {
     const Clock::time_point start = Clock::now();
     PCCD::Point_cloud_object<> object(input);
+    if (object.orientation().unoriented == object.size())
+        throw PCCD::Invalid_input(name + ": no point has a surface normal: its " + std::to_string(object.size()) +
+                                  " points are too few or too degenerate (e.g. all on one line) to make a surface");
     return {std::move(object), ms_since(start)};
 }
 

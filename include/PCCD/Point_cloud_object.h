@@ -112,8 +112,8 @@ struct Scan_estimate {
 /// h = eta r(P) / sqrt(-ln theta_eps) (or the user's h), the CPSP map bounded at the kernel's
 /// support radius R = h sqrt(-ln theta_eps), the unoriented normals n(p_i) of the geodesic surface
 /// with the noise estimate (and, when the noise asks for a wider kernel, CPSP map and normals once
-/// more with it: Bandwidth_options::noise_factor), their orientation (over the graph, or like
-/// normals the user gives), and the surface's domain radii (Surface_domain_options).
+/// more with it: Bandwidth_options::noise_factor), their orientation (over the graph, with the
+/// normals the user gives as hints that decide the sign where they exist), and the surface's domain radii (Surface_domain_options).
 ///
 /// \tparam K a model of PointCloudKernel.
 ///
@@ -150,10 +150,13 @@ public:
     {
     }
 
-    /// As above, but each normal n(p_i) takes the sign of the normal `get(normal_map, item)` the
-    /// user gives (e.g. read from a PLY file) instead of being propagated over the graph.
+    /// As above, but the normals `get(normal_map, item)` the user gives (e.g. read from a PLY file)
+    /// are hints (orient_normals_with_hints()): each normal n(p_i) takes the sign of its point's
+    /// given normal, and the points whose given normal is zero or not finite (missing) get theirs
+    /// by propagation over the graph from the others (or, in a component of the graph without any
+    /// given normal, as without a normal map).
     /// \tparam NormalMap a readable property map from items to vectors (any Point3 type).
-    /// \throws Invalid_input also if a given normal is zero or not finite.
+    /// \throws Invalid_input as above; a zero or non-finite given normal is not an error.
     template <std::ranges::input_range Range, class PointMap, class NormalMap>
         requires ReadablePointMap<PointMap, std::ranges::range_value_t<Range>> &&
                  ReadablePointMap<NormalMap, std::ranges::range_value_t<Range>>
@@ -164,7 +167,8 @@ public:
     }
 
     /// From what a point file holds (PCCD::IO::read_points): its points, and its normals when it
-    /// has them, which then orient n(p_i) as in the constructor with a normal map.
+    /// has them, which are then hints as in the constructor with a normal map (zero or non-finite
+    /// normals, partly or wholly, count as missing for their points).
     /// \throws Invalid_input as the constructors above, and if there are normals but not exactly
     ///         one per point.
     explicit Point_cloud_object(const Point_data& data, const Point_cloud_object_options& options = {})
@@ -213,9 +217,12 @@ public:
     double eta() const { return weight().support_radius() / m_data->sampling_radius; }
     /// The oriented normals, 3 x N (zero columns: points whose normal is undetermined).
     const Eigen::Matrix3Xd& normals() const { return m_data->geodesic.normals(); }
-    /// What the orientation did (components is 0 when the user gave the normals).
+    /// What the orientation did (components is 0 when the user gave a usable normal for every
+    /// point). hints_used, hints_ignored and unhinted_components are not stored by save(): 0 for a
+    /// loaded object.
     const Orientation_report& orientation() const { return m_data->orientation; }
-    /// True when the normals were oriented like normals the user gave.
+    /// True when the user gave normals (hints, possibly missing for some points: see
+    /// orientation().hints_used).
     bool normals_given() const { return m_data->normals_given; }
     /// Noise estimate and outliers (see Scan_estimate).
     const Scan_estimate& scan() const { return m_data->scan; }
@@ -403,9 +410,9 @@ private:
         }
 
         start = Clock::now();
-        const Orientation_report orientation = given_normals
-                                                   ? orient_normals_like(estimate.normals, *given_normals)
-                                                   : orient_normals(*graph, cloud.coordinates(), estimate.normals);
+        const Orientation_report orientation =
+            given_normals ? orient_normals_with_hints(*graph, cloud.coordinates(), estimate.normals, *given_normals)
+                          : orient_normals(*graph, cloud.coordinates(), estimate.normals);
         timings.normals += ms_since(start);
         start = Clock::now();
         Eigen::VectorXd domain = surface_domain_radii(cloud, options.domain);

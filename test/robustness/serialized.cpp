@@ -86,18 +86,17 @@ struct Object_layout {
 
 Object_layout object_layout(const std::string& bytes, std::size_t n)
 {
-    // ... | points 24N | normals 24N | u64 G | G bytes | u64 checksum: find G from the end.
-    for (std::size_t at = bytes.size() - 16; at > 16; --at) {
-        const auto g = get<std::uint64_t>(bytes, at);
-        if (at + 8 + g + 8 == bytes.size() && at >= 48 * n) {
-            const std::size_t normals = at - 24 * n;
-            const std::size_t points = normals - 24 * n;
-            if (get<std::uint64_t>(bytes, 16) == n)
-                return {n, 24, 32, 40, points, normals, at, at + 8};
-        }
-    }
-    FAIL("object file layout not recognised");
-    return {};
+    // Version 2 (Point_cloud_object.h): a 113-byte header, points 24N, normals 24N, then the scan
+    // section (f64 noise, u64 input points, u64 M, u32 outliers[M], u64 D, f64 radii[D]), u64 G,
+    // G bytes, u64 checksum.
+    REQUIRE(get<std::uint64_t>(bytes, 16) == n);
+    const std::size_t points = 113, normals = points + 24 * n, scan = normals + 24 * n;
+    const auto m = get<std::uint64_t>(bytes, scan + 16);
+    const std::size_t radii_count = scan + 24 + 4 * std::size_t(m);
+    const auto d = get<std::uint64_t>(bytes, radii_count);
+    const std::size_t geodesic_size = radii_count + 8 + 8 * std::size_t(d);
+    REQUIRE(geodesic_size + 8 + get<std::uint64_t>(bytes, geodesic_size) + 8 == bytes.size());
+    return {n, 24, 32, 40, points, normals, geodesic_size, geodesic_size + 8};
 }
 
 void require_load_error(const std::string& name, const std::string& bytes, const std::vector<std::string>& keywords)
@@ -130,10 +129,11 @@ TEST_CASE("serialized objects: empty, foreign, other version and byte order", "[
     PCCD::write_geodesic_data(geodesic_path, small_object().graph(), small_object().cpsp());
     require_load_error("geodesic_as_object.pccdobj", read_bytes(geodesic_path), {"not a PCCD object file"});
     require_geodesic_error("object_as_geodesic.pccdgeo", good, {"not a PCCD geodesic file"});
-    for (const std::uint32_t version : {0u, 2u, 0xffffffffu}) {
+    for (const std::uint32_t version : {0u, 3u, 0xffffffffu}) {
         std::string other = good;
         put(other, 8, version);
-        require_load_error("version.pccdobj", other, {"object file format version " + std::to_string(version), "reads version 1"});
+        require_load_error("version.pccdobj", other,
+                           {"object file format version " + std::to_string(version), "reads versions 1 and 2"});
         reseal(other);
         require_load_error("version.pccdobj", other, {"object file format version " + std::to_string(version)});
     }
@@ -194,9 +194,9 @@ TEST_CASE("serialized objects: inconsistent content behind a valid checksum", "[
     const double inf = std::numeric_limits<double>::infinity();
     for (const std::uint64_t count : {std::uint64_t(0), std::uint64_t(1), std::uint64_t(1) << 40, ~std::uint64_t(0)})
         crafted("count", [&](std::string& b) { put(b, 16, count); }, {"inconsistent point count " + std::to_string(count)});
-    // A count off by one moves every later field: the geodesic section's size no longer fits.
+    // A count off by one moves every later field: the scan section no longer fits.
     for (const std::uint64_t count : {n - 1, n + 1})
-        crafted("count_off_by_one", [&](std::string& b) { put(b, 16, count); }, {"inconsistent size of the geodesic section"});
+        crafted("count_off_by_one", [&](std::string& b) { put(b, 16, count); }, {"inconsistent"});
     for (const double r : {0.0, -1.0, nan, inf})
         crafted("radius", [&](std::string& b) { put(b, at.sampling_radius, r); }, {"invalid sampling radius"});
     for (const double h : {0.0, -1.0, nan, inf, 1e300})
@@ -212,6 +212,17 @@ TEST_CASE("serialized objects: inconsistent content behind a valid checksum", "[
         crafted("normal", [&](std::string& b) { put(b, at.normals + 8 * (3 * 5 + 2), bad); },
                 {"inconsistent content", "normal of point 5 is not finite"});
     }
+    // The scan section (noise, outliers, domain radii).
+    const std::size_t scan = at.normals + 24 * n;
+    for (const double noise : {-1.0, nan, inf})
+        crafted("noise", [&](std::string& b) { put(b, scan, noise); }, {"invalid noise estimate"});
+    crafted("input_points", [&](std::string& b) { put(b, scan + 8, std::uint64_t(n - 1)); }, {"inconsistent outlier count"});
+    crafted("outliers", [&](std::string& b) { put(b, scan + 16, std::uint64_t(3)); }, {"inconsistent outlier count"});
+    for (const double radius : {0.0, -1.0, nan})
+        crafted("domain_radius", [&](std::string& b) { put(b, scan + 32 + 8 * 4, radius); },
+                {"inconsistent content", "domain radius of point 4"});
+    crafted("domain_count", [&](std::string& b) { put(b, scan + 24, std::uint64_t(n - 1)); },
+            {"inconsistent number of domain radii"});
     crafted("geodesic_size", [&](std::string& b) { put(b, at.geodesic_size, get<std::uint64_t>(b, at.geodesic_size) + 1); },
             {"inconsistent size of the geodesic section"});
     crafted("geodesic_size_huge", [&](std::string& b) { put(b, at.geodesic_size, ~std::uint64_t(0) - 7); },

@@ -1,9 +1,11 @@
 // PCCD/Surface/orient_normals.h -- consistent orientation of the per-point normals that fix the
 // sign of the implicit surface (ALGORITHMS.md section 1): propagation along a minimum spanning tree
 // of the proximity graph with edge weight 1 - |n_i . n_j| (Hoppe et al. 1992), one tree per connected
-// component, or orientation like normals the user gives (e.g. read from a PLY file).
+// component; the same with hints (normals read from a file, some of them possibly missing) that
+// decide the sign where they exist; or orientation like a complete set of reference normals.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -25,14 +27,145 @@ namespace PCCD {
 
 /// What an orientation did.
 struct Orientation_report {
-    /// Number of normals whose sign was reversed.
+    /// Number of normals whose sign was reversed (a normal filled in from a hint is not counted).
     std::size_t flipped = 0;
     /// Number of spanning trees the propagation grew: the connected components of the graph
-    /// restricted to points with a normal and to non-virtual edges. 0 for orient_normals_like().
+    /// restricted to points with a normal and to non-virtual edges, less those in which every point
+    /// has a hint (no propagation is needed there). All components for orient_normals(); 0 for
+    /// orient_normals_like().
     std::size_t components = 0;
-    /// Number of points without a normal (zero columns), left unoriented.
+    /// Number of points without a normal (zero columns, and no hint to fill them), left unoriented.
     std::size_t unoriented = 0;
+    /// Number of points whose normal took the sign of their own hint (or, where the point's own fit
+    /// is undetermined, the normalized hint itself). All points for orient_normals_like(); 0 for
+    /// orient_normals().
+    std::size_t hints_used = 0;
+    /// Number of hints that were zero or not finite, i.e. points that had no hint although hints
+    /// were given. 0 when no hints were given.
+    std::size_t hints_ignored = 0;
+    /// Number of the components counted in `components` without any hint, oriented by the rule of
+    /// orient_normals() (propagation, then the outward choice).
+    std::size_t unhinted_components = 0;
 };
+
+namespace internal {
+
+/// Orientation over the graph with optional hints (`hints` null: none; else 3 x N, a zero or
+/// non-finite column meaning no hint). The rule is documented at orient_normals_with_hints().
+template <class Graph, class Positions, class VirtualMap>
+Orientation_report orient_normals_over_graph(const char* caller, const Graph& g,
+                                             const Eigen::MatrixBase<Positions>& positions, Eigen::Matrix3Xd& normals,
+                                             const Eigen::Matrix3Xd* hints, const VirtualMap& is_virtual)
+{
+    const std::size_t n = num_vertices(g);
+    if (std::size_t(positions.cols()) != n || std::size_t(normals.cols()) != n || positions.rows() != 3)
+        throw Invalid_input(internal::concat(caller, ": the graph has ", n, " vertices, the positions ",
+                                             positions.cols(), " columns and the normals ", normals.cols()));
+    if (hints && std::size_t(hints->cols()) != n)
+        throw Invalid_input(internal::concat(caller, ": ", hints->cols(), " hints for ", n,
+                                             " points (need one per point, or none)"));
+    Orientation_report report;
+    const Eigen::Matrix3Xd original = normals;
+    std::vector<char> has_hint(n, 0), has_normal(n, 0);
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto column = normals.col(Eigen::Index(i));
+        if (!internal::all_finite(column))
+            throw Invalid_input(internal::concat(caller, ": normal ", i, " is not finite"));
+        if (hints) {
+            const auto hint = hints->col(Eigen::Index(i));
+            has_hint[i] = internal::all_finite(hint) && !hint.isZero(0.0);
+            if (!has_hint[i]) ++report.hints_ignored;
+        }
+        if (has_hint[i]) {
+            ++report.hints_used;
+            // Scaled before normalizing: a tiny or huge hint still gives a unit direction.
+            const Eigen::Vector3d hint = hints->col(Eigen::Index(i)).stableNormalized();
+            if (column.isZero(0.0))
+                normals.col(Eigen::Index(i)) = hint; // undetermined fit: the hint itself
+            else if (column.dot(hint) < 0.0)
+                normals.col(Eigen::Index(i)) = -column;
+        }
+        has_normal[i] = !normals.col(Eigen::Index(i)).isZero(0.0);
+        if (!has_normal[i]) ++report.unoriented;
+        centroid += positions.col(Eigen::Index(i)).template cast<double>();
+    }
+    if (n > 0) centroid /= double(n);
+    // Unit normals for the weights and the signs as they stand after the hints; the signs of points
+    // without a hint are set relative to these.
+    Eigen::Matrix3Xd unit(3, Eigen::Index(n));
+    for (std::size_t i = 0; i < n; ++i)
+        unit.col(Eigen::Index(i)) = has_normal[i] ? Eigen::Vector3d(normals.col(Eigen::Index(i)).normalized())
+                                                  : Eigen::Vector3d::Zero();
+    const auto followed = [&](const auto& e, std::uint32_t from) -> std::uint32_t {
+        if (get(is_virtual, e)) return from;
+        return static_cast<std::uint32_t>(target(e, g));
+    };
+
+    // One connected component at a time, from its smallest index: first its members (breadth-first),
+    // then a minimum spanning forest for 1 - |n_i . n_j| grown by Prim's algorithm from all its
+    // hinted points at once, or, without hints, from its smallest index. The heap holds candidate
+    // tree edges (weight, vertex, parent); the smallest weight, then the smallest vertex index, then
+    // the smallest parent index, is taken first.
+    using Candidate = std::tuple<double, std::uint32_t, std::uint32_t>;
+    std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> heap;
+    std::vector<char> seen(n, 0), in_tree(n, 0);
+    std::vector<std::uint32_t> members, hinted, order;
+    const auto push_edges = [&](std::uint32_t v) {
+        for (auto [e, e_end] = out_edges(v, g); e != e_end; ++e) {
+            const std::uint32_t w = followed(*e, v);
+            if (w == v || in_tree[w] || !has_normal[w]) continue;
+            heap.emplace(1.0 - std::abs(unit.col(v).dot(unit.col(w))), w, v);
+        }
+    };
+    for (std::size_t root = 0; root < n; ++root) {
+        if (seen[root] || !has_normal[root]) continue;
+        members.assign(1, std::uint32_t(root));
+        seen[root] = 1;
+        for (std::size_t next = 0; next < members.size(); ++next)
+            for (auto [e, e_end] = out_edges(members[next], g); e != e_end; ++e) {
+                const std::uint32_t w = followed(*e, members[next]);
+                if (seen[w] || !has_normal[w]) continue;
+                seen[w] = 1;
+                members.push_back(w);
+            }
+        hinted.clear();
+        for (const std::uint32_t v : members)
+            if (has_hint[v]) hinted.push_back(v);
+        if (hinted.size() == members.size()) continue; // every sign is given: no tree to grow
+        ++report.components;
+        std::sort(hinted.begin(), hinted.end());
+        order.clear();
+        if (hinted.empty()) {
+            ++report.unhinted_components;
+            heap.emplace(0.0, std::uint32_t(root), std::uint32_t(root));
+        } else {
+            for (const std::uint32_t v : hinted) in_tree[v] = 1;
+            for (const std::uint32_t v : hinted) push_edges(v);
+        }
+        while (!heap.empty()) {
+            const auto [weight, v, parent] = heap.top();
+            heap.pop();
+            if (in_tree[v]) continue;
+            in_tree[v] = 1;
+            order.push_back(v);
+            if (v != parent && normals.col(v).dot(normals.col(parent)) < 0.0) normals.col(v) = -normals.col(v);
+            push_edges(v);
+        }
+        if (!hinted.empty()) continue;
+        // No hint in this component: face away from the centroid of the whole cloud.
+        double outwardness = 0.0;
+        for (const std::uint32_t v : order)
+            outwardness += normals.col(v).normalized().dot(positions.col(v).template cast<double>() - centroid);
+        if (outwardness < 0.0)
+            for (const std::uint32_t v : order) normals.col(v) = -normals.col(v);
+    }
+    for (std::size_t i = 0; i < n; ++i)
+        if (normals.col(Eigen::Index(i)).dot(original.col(Eigen::Index(i))) < 0.0) ++report.flipped;
+    return report;
+}
+
+} // namespace internal
 
 /// Orients `normals` consistently by propagation over the graph `g`.
 ///
@@ -59,60 +192,7 @@ template <class Graph, class Positions, class VirtualMap = No_virtual_edges>
 Orientation_report orient_normals(const Graph& g, const Eigen::MatrixBase<Positions>& positions,
                                   Eigen::Matrix3Xd& normals, const VirtualMap& is_virtual = {})
 {
-    const std::size_t n = num_vertices(g);
-    if (std::size_t(positions.cols()) != n || std::size_t(normals.cols()) != n || positions.rows() != 3)
-        throw Invalid_input(internal::concat("orient_normals: the graph has ", n, " vertices, the positions ",
-                                             positions.cols(), " columns and the normals ", normals.cols()));
-    Orientation_report report;
-    std::vector<char> has_normal(n, 0);
-    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-    for (std::size_t i = 0; i < n; ++i) {
-        const auto column = normals.col(Eigen::Index(i));
-        if (!internal::all_finite(column))
-            throw Invalid_input(internal::concat("orient_normals: normal ", i, " is not finite"));
-        has_normal[i] = !column.isZero(0.0);
-        if (!has_normal[i]) ++report.unoriented;
-        centroid += positions.col(Eigen::Index(i)).template cast<double>();
-    }
-    if (n > 0) centroid /= double(n);
-    const Eigen::Matrix3Xd original = normals;
-    auto unit = [&](std::size_t i) { return Eigen::Vector3d(original.col(Eigen::Index(i)).normalized()); };
-
-    // Heap of candidate tree edges (weight, vertex, parent); the smallest weight, then the smallest
-    // vertex index, is taken first.
-    using Candidate = std::tuple<double, std::uint32_t, std::uint32_t>;
-    std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> heap;
-    std::vector<char> in_tree(n, 0);
-    std::vector<std::uint32_t> members;
-    for (std::size_t root = 0; root < n; ++root) {
-        if (in_tree[root] || !has_normal[root]) continue;
-        ++report.components;
-        members.clear();
-        heap.emplace(0.0, std::uint32_t(root), std::uint32_t(root));
-        while (!heap.empty()) {
-            const auto [weight, v, parent] = heap.top();
-            heap.pop();
-            if (in_tree[v]) continue;
-            in_tree[v] = 1;
-            members.push_back(v);
-            if (v != parent && normals.col(v).dot(normals.col(parent)) < 0.0) normals.col(v) = -normals.col(v);
-            const Eigen::Vector3d nv = unit(v);
-            for (auto [e, e_end] = out_edges(v, g); e != e_end; ++e) {
-                if (get(is_virtual, *e)) continue;
-                const auto w = static_cast<std::uint32_t>(target(*e, g));
-                if (w == v || in_tree[w] || !has_normal[w]) continue;
-                heap.emplace(1.0 - std::abs(nv.dot(unit(w))), w, v);
-            }
-        }
-        double outwardness = 0.0;
-        for (const std::uint32_t v : members)
-            outwardness += normals.col(v).normalized().dot(positions.col(v).template cast<double>() - centroid);
-        if (outwardness < 0.0)
-            for (const std::uint32_t v : members) normals.col(v) = -normals.col(v);
-    }
-    for (std::size_t i = 0; i < n; ++i)
-        if (has_normal[i] && normals.col(Eigen::Index(i)).dot(original.col(Eigen::Index(i))) < 0.0) ++report.flipped;
-    return report;
+    return internal::orient_normals_over_graph("orient_normals", g, positions, normals, nullptr, is_virtual);
 }
 
 /// Orients a Proximity_graph's points' normals (its virtual edges are not followed).
@@ -123,10 +203,61 @@ Orientation_report orient_normals(const Proximity_graph& graph, const Eigen::Mat
     return orient_normals(graph.graph(), positions, normals, graph.virtual_map());
 }
 
+/// Orients `normals` with hints: normals known up to quality, such as those read from a file, which
+/// decide the sign where they exist, while the graph decides it elsewhere.
+///
+/// A point's hint is the column of `hints`; a zero or non-finite column means "no hint for that
+/// point" (files often store 0 0 0 for an unknown normal). Then:
+/// - a point with a hint takes the hint's sign: n_i is reversed when n_i . hint_i < 0; if its own
+///   fit is undetermined (zero column of `normals`), it takes the normalized hint instead, so that
+///   it still orients the evaluations near it;
+/// - in a connected component of the graph (ignoring virtual edges and points without a normal)
+///   that holds hinted points, the points without a hint get their sign by propagation along a
+///   minimum spanning forest for the weight 1 - |n_i . n_j| grown by Prim's algorithm from all the
+///   hinted points at once (as one tree whose root is the set of hinted points): each takes the
+///   sign that agrees with its tree parent's;
+/// - a component without any hint is oriented as orient_normals() does it (a tree from its smallest
+///   index, then the outward choice against the centroid of the whole cloud).
+/// With no hint at all (`hints` with 0 columns, or only zero columns) the result is exactly
+/// orient_normals()'s; with a hint for every point, exactly orient_normals_like()'s.
+///
+/// \tparam Graph, Positions, VirtualMap as for orient_normals().
+/// \tparam Hints an Eigen 3 x N matrix expression (float or double), or 3 x 0 for no hints.
+/// \param normals 3 x N, modified in place (signs, and the columns filled from hints).
+/// \throws Invalid_input if the sizes of `g`, `positions`, `normals` and `hints` (unless empty)
+///         differ or a normal is not finite. Hints are never an error.
+/// Complexity: O(E log E). Deterministic: ties between equal weights go to the smaller index.
+/// Thread safety: reads `g`, `positions` and `hints`, writes `normals` only.
+template <class Graph, class Positions, class Hints, class VirtualMap = No_virtual_edges>
+    requires(!std::is_same_v<Graph, Proximity_graph>) && EdgeFlagMap<VirtualMap, Graph>
+Orientation_report orient_normals_with_hints(const Graph& g, const Eigen::MatrixBase<Positions>& positions,
+                                             Eigen::Matrix3Xd& normals, const Eigen::MatrixBase<Hints>& hints,
+                                             const VirtualMap& is_virtual = {})
+{
+    if (hints.rows() != 3 && hints.cols() != 0)
+        throw Invalid_input(internal::concat("orient_normals_with_hints: the hints have ", hints.rows(),
+                                             " rows, expected 3"));
+    if (hints.cols() == 0)
+        return internal::orient_normals_over_graph("orient_normals_with_hints", g, positions, normals, nullptr,
+                                                   is_virtual);
+    const Eigen::Matrix3Xd given = hints.template cast<double>();
+    return internal::orient_normals_over_graph("orient_normals_with_hints", g, positions, normals, &given, is_virtual);
+}
+
+/// Orients a Proximity_graph's points' normals with hints (its virtual edges are not followed).
+template <class Positions, class Hints>
+Orientation_report orient_normals_with_hints(const Proximity_graph& graph, const Eigen::MatrixBase<Positions>& positions,
+                                             Eigen::Matrix3Xd& normals, const Eigen::MatrixBase<Hints>& hints)
+{
+    return orient_normals_with_hints(graph.graph(), positions, normals, hints, graph.virtual_map());
+}
+
 /// Orients each normal like the given reference normal of the same point (e.g. normals read from a
 /// file): n_i is reversed when n_i . reference_i < 0. A zero column of `normals` (a point whose own
 /// fit is undetermined) takes the normalized reference normal, so that the point still orients
-/// the evaluations near it.
+/// the evaluations near it. Strict: every point needs a usable reference normal. It is the
+/// graph-free special case of orient_normals_with_hints() with a hint for every point; normals that
+/// may be missing for some points (as in many files) go to orient_normals_with_hints() instead.
 /// \throws Invalid_input if the sizes differ or a reference normal is zero or not finite (the
 ///         message names the point).
 /// Complexity: O(N). Thread safety: writes `normals` only.
@@ -137,6 +268,7 @@ Orientation_report orient_normals_like(Eigen::Matrix3Xd& normals, const Eigen::M
         throw Invalid_input(internal::concat("orient_normals_like: ", reference.cols(), " reference normals for ",
                                              normals.cols(), " points"));
     Orientation_report report;
+    report.hints_used = std::size_t(normals.cols());
     for (Eigen::Index i = 0; i < normals.cols(); ++i) {
         const Eigen::Vector3d r = reference.col(i).template cast<double>();
         if (!internal::all_finite(r) || r.isZero(0.0))
