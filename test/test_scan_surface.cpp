@@ -30,7 +30,9 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <memory>
 #include <numbers>
+#include <optional>
 #include <set>
 #include <string>
 #include <utility>
@@ -51,63 +53,71 @@ Eigen::Vector3d random_direction(PCCD::Random_engine& engine)
     return {rho * std::cos(phi), rho * std::sin(phi), z};
 }
 
-/// Brute force: (distance, index) of every other point j != i, nearest first.
-std::vector<std::pair<double, std::uint32_t>> others_by_distance(const Eigen::Matrix3Xd& points, Eigen::Index i)
-{
-    std::vector<std::pair<double, std::uint32_t>> out;
-    out.reserve(std::size_t(points.cols()));
-    for (Eigen::Index j = 0; j < points.cols(); ++j)
-        if (j != i) out.emplace_back((points.col(j) - points.col(i)).norm(), std::uint32_t(j));
-    std::sort(out.begin(), out.end());
-    return out;
-}
+/// Brute force: the k nearest other points of every point (row-major, k per point, ordered by
+/// distance, then index), with their distances. Plain loops over a copy of the coordinates, so that
+/// it stays cheap in unoptimized builds.
+struct Knn_table {
+    unsigned k = 0;
+    std::vector<double> distance;
+    std::vector<std::uint32_t> index;
+    double at(std::size_t i, unsigned m) const { return distance[i * k + m]; }
+    std::uint32_t neighbor(std::size_t i, unsigned m) const { return index[i * k + m]; }
+};
 
-/// Brute force: distance from p_i to its k-th nearest other point, for every i.
-Eigen::VectorXd brute_spacing(const Eigen::Matrix3Xd& points, unsigned k)
+Knn_table brute_knn(const Eigen::Matrix3Xd& points, unsigned k)
 {
-    Eigen::VectorXd out(points.cols());
-    std::vector<double> d;
-    for (Eigen::Index i = 0; i < points.cols(); ++i) {
-        d.clear();
-        for (Eigen::Index j = 0; j < points.cols(); ++j)
-            if (j != i) d.push_back((points.col(j) - points.col(i)).norm());
-        std::nth_element(d.begin(), d.begin() + (k - 1), d.end());
-        out(i) = d[k - 1];
-    }
-    return out;
-}
-
-/// Brute force: the rule of find_outliers restated over brute-force neighbours: i is an outlier when
-/// l_i > ratio * m_i or l_i > global_ratio * M (global_ratio > 0), l the distance to the k-th
-/// nearest other point, m_i the median of l over i's k nearest other points and M the median of l
-/// over the cloud; a zero median never flags. The median of an even count is taken as the upper
-/// middle value (element n / 2 of the sorted values), which is what the header's nth_element picks.
-std::vector<std::uint32_t> brute_outliers(const Eigen::Matrix3Xd& points, unsigned k, double ratio, double global_ratio)
-{
-    const auto n = std::size_t(points.cols());
-    Eigen::VectorXd l(points.cols());
-    std::vector<std::vector<std::uint32_t>> near(n);
-    std::vector<std::pair<double, std::uint32_t>> d;
+    const std::size_t n = std::size_t(points.cols());
+    const std::vector<double> xyz(points.data(), points.data() + 3 * n);
+    Knn_table table{k, std::vector<double>(n * k), std::vector<std::uint32_t>(n * k)};
+    std::vector<double> best_d2(k);
+    std::vector<std::uint32_t> best_j(k);
     for (std::size_t i = 0; i < n; ++i) {
-        d.clear();
-        for (std::size_t j = 0; j < n; ++j)
-            if (j != i) d.emplace_back((points.col(Eigen::Index(j)) - points.col(Eigen::Index(i))).norm(), std::uint32_t(j));
-        std::partial_sort(d.begin(), d.begin() + k, d.end());
-        l(Eigen::Index(i)) = d[k - 1].first;
-        for (unsigned m = 0; m < k; ++m) near[i].push_back(d[m].second);
+        std::fill(best_d2.begin(), best_d2.end(), std::numeric_limits<double>::infinity());
+        const double xi = xyz[3 * i], yi = xyz[3 * i + 1], zi = xyz[3 * i + 2];
+        for (std::size_t j = 0; j < n; ++j) {
+            if (j == i) continue;
+            const double dx = xyz[3 * j] - xi, dy = xyz[3 * j + 1] - yi, dz = xyz[3 * j + 2] - zi;
+            const double d2 = dx * dx + dy * dy + dz * dz;
+            if (!(d2 < best_d2[k - 1])) continue; // j ascends: an equal distance keeps the smaller index
+            unsigned m = k - 1;
+            while (m > 0 && d2 < best_d2[m - 1]) {
+                best_d2[m] = best_d2[m - 1];
+                best_j[m] = best_j[m - 1];
+                --m;
+            }
+            best_d2[m] = d2;
+            best_j[m] = std::uint32_t(j);
+        }
+        for (unsigned m = 0; m < k; ++m) {
+            table.distance[i * k + m] = std::sqrt(best_d2[m]);
+            table.index[i * k + m] = best_j[m];
+        }
     }
+    return table;
+}
+
+/// Brute force: the rule of find_outliers restated over brute-force neighbours (the first k of the
+/// table): i is an outlier when l_i > ratio * m_i or l_i > global_ratio * M (global_ratio > 0), l
+/// the distance to the k-th nearest other point, m_i the median of l over i's k nearest other points
+/// and M the median of l over the cloud; a zero median never flags. The median of an even count is
+/// taken as the upper middle value (element n / 2 of the sorted values), which is what the header's
+/// nth_element picks.
+std::vector<std::uint32_t> brute_outliers(const Knn_table& table, unsigned k, double ratio, double global_ratio)
+{
+    const std::size_t n = table.distance.size() / table.k;
+    std::vector<double> l(n);
+    for (std::size_t i = 0; i < n; ++i) l[i] = table.at(i, k - 1);
     const auto upper_median = [](std::vector<double> v) {
         std::sort(v.begin(), v.end());
         return v[v.size() / 2];
     };
-    const double global = upper_median(std::vector<double>(l.data(), l.data() + l.size()));
+    const double global = upper_median(l);
     std::vector<std::uint32_t> out;
     for (std::size_t i = 0; i < n; ++i) {
         std::vector<double> around;
-        for (std::uint32_t j : near[i]) around.push_back(l(j));
-        const double li = l(Eigen::Index(i));
+        for (unsigned m = 0; m < k; ++m) around.push_back(l[table.neighbor(i, m)]);
         const double local = upper_median(around);
-        if ((local > 0.0 && li > ratio * local) || (global_ratio > 0.0 && global > 0.0 && li > global_ratio * global))
+        if ((local > 0.0 && l[i] > ratio * local) || (global_ratio > 0.0 && global > 0.0 && l[i] > global_ratio * global))
             out.push_back(std::uint32_t(i));
     }
     return out;
@@ -116,10 +126,12 @@ std::vector<std::uint32_t> brute_outliers(const Eigen::Matrix3Xd& points, unsign
 /// Brute force: the point of `points` nearest to x (smallest index on ties) and its distance.
 std::pair<std::uint32_t, double> brute_nearest(const Eigen::Matrix3Xd& points, const Eigen::Vector3d& x)
 {
+    const double* p = points.data();
     std::uint32_t best = 0;
     double best_d2 = std::numeric_limits<double>::infinity();
-    for (Eigen::Index j = 0; j < points.cols(); ++j) {
-        const double d2 = (points.col(j) - x).squaredNorm();
+    for (Eigen::Index j = 0; j < points.cols(); ++j, p += 3) {
+        const double dx = p[0] - x.x(), dy = p[1] - x.y(), dz = p[2] - x.z();
+        const double d2 = dx * dx + dy * dy + dz * dz;
         if (d2 < best_d2) {
             best_d2 = d2;
             best = std::uint32_t(j);
@@ -199,6 +211,7 @@ TEST_CASE("local spacing is the k-th nearest other point's distance, with the k 
     std::swap(pts[0], pts[pts.size() - 1]);
     const PCCD::Point_cloud<> cloud(pts);
     const Eigen::Matrix3Xd p = coordinates(cloud);
+    const Knn_table brute = brute_knn(p, 6); // its first k entries are k nearest, for k <= 6
 
     for (unsigned k : {1u, 3u, 6u}) {
         const PCCD::Local_spacing with = PCCD::local_spacing(cloud, k, true, 1);
@@ -211,8 +224,8 @@ TEST_CASE("local spacing is the k-th nearest other point's distance, with the k 
         std::size_t zero_spacings = 0;
         for (Eigen::Index i = 0; i < p.cols(); ++i) {
             INFO("k = " << k << ", point " << i);
-            const auto others = others_by_distance(p, i);
-            const double truth = others[k - 1].first;
+            const auto row = std::size_t(i);
+            const double truth = brute.at(row, k - 1);
             CHECK(with.spacing(i) == Approx(truth).epsilon(1e-12).margin(1e-15));
             zero_spacings += truth == 0.0;
             // The neighbour list: k distinct points other than i, nearest first, each no farther than
@@ -231,8 +244,8 @@ TEST_CASE("local spacing is the k-th nearest other point's distance, with the k 
                 previous = dj;
             }
             CHECK(listed.size() == k);
-            for (const auto& [d, j] : others)
-                if (d < truth * (1 - 1e-12)) CHECK(listed.count(j) == 1);
+            for (unsigned m = 0; m < k; ++m)
+                if (brute.at(row, m) < truth * (1 - 1e-12)) CHECK(listed.count(brute.neighbor(row, m)) == 1);
         }
         // The duplicates do show up: with k = 1 every copy of the three duplicated points has
         // spacing 0; with k = 6 only the 9 copies of the third.
@@ -264,9 +277,10 @@ TEST_CASE("find_outliers flags exactly the points injected off a sphere", "[surf
         CHECK(PCCD::find_outliers(PCCD::local_spacing(cloud, 6, true)) == c.outliers);
         // Both tests follow their rule, restated over brute-force neighbours.
         const std::vector<std::uint32_t> local = PCCD::find_outliers(cloud, {.global_ratio = 0.0});
-        CHECK(local == brute_outliers(c.points, 6, 4.0, 0.0));
+        const Knn_table brute = brute_knn(c.points, 6);
+        CHECK(local == brute_outliers(brute, 6, 4.0, 0.0));
         CHECK(PCCD::find_outliers(cloud, {.neighbors = 4, .ratio = 3.0, .global_ratio = 5.0}) ==
-              brute_outliers(c.points, 4, 3.0, 5.0));
+              brute_outliers(brute, 4, 3.0, 5.0));
         // The local test alone flags no sphere point, and most injected points; it misses those
         // whose nearest neighbours are other injected points (measured: 1 or 2 of 20 per seed), which
         // is what the global test is for.
@@ -286,7 +300,8 @@ TEST_CASE("clean samples and uneven density have no outliers", "[surface]")
         }
     });
     // A plane patch [0, 2] x [0, 1] sampled 16 times denser on its left half than on its right
-    // (4 times the spacing on the right): a local density change, not outliers.
+    // (4 times the spacing on the right): a local density change, not outliers for the local test
+    // (measured: the largest l_i / median l_j is 2.3-3.1, against 1.6-2.2 on the clean shapes).
     const PCCD::Plane_patch_shape left(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0));
     const PCCD::Plane_patch_shape right(Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0));
     for (std::uint64_t seed : {621u, 622u, 623u}) {
@@ -298,6 +313,15 @@ TEST_CASE("clean samples and uneven density have no outliers", "[surface]")
         points << dense.points, sparse.points;
         const PCCD::Point_cloud<> cloud(points);
         CHECK(PCCD::find_outliers(cloud, {.global_ratio = 0.0}).empty());
+        // With the global test on too, an 8 times sparser right half (200 points) loses nothing
+        // either (measured: no outlier on 10 seeds; at 16 times sparser, the global test flags 1 or
+        // 2 of the sparse points on 2 seeds of 10).
+        PCCD::Random_engine again(seed);
+        const PCCD::Surface_sample dense_again = left.sample(1600, again);
+        const PCCD::Surface_sample sparser = right.sample(200, again);
+        Eigen::Matrix3Xd eightfold(3, dense_again.points.cols() + sparser.points.cols());
+        eightfold << dense_again.points, sparser.points;
+        CHECK(PCCD::find_outliers(PCCD::Point_cloud<>(eightfold)).empty());
     }
 }
 
@@ -335,8 +359,8 @@ TEST_CASE("the surface is undefined farther than D from the nearest point, and d
     const Eigen::VectorXd& radii = object.domain_radii();
     REQUIRE(radii.size() == p.cols());
     // D_i = the distance to the 6th nearest other point (brute force), and factor scales it.
-    const Eigen::VectorXd truth = brute_spacing(p, 6);
-    for (Eigen::Index i = 0; i < p.cols(); ++i) REQUIRE(radii(i) == Approx(truth(i)).epsilon(1e-12));
+    const Knn_table truth = brute_knn(p, 6);
+    for (Eigen::Index i = 0; i < p.cols(); ++i) REQUIRE(radii(i) == Approx(truth.at(std::size_t(i), 5)).epsilon(1e-12));
     CHECK(PCCD::surface_domain_radii(object.cloud()) == radii);
     CHECK(PCCD::surface_domain_radii(object.cloud(), {.factor = 2.5}) == 2.5 * radii);
     CHECK(PCCD::surface_domain_radii(object.cloud(), {.enabled = false}).size() == 0);
@@ -494,31 +518,28 @@ TEST_CASE("the noise estimate recovers the sampling noise", "[surface]")
     // sigma = 0.5 s on every coordinate (only the normal component moves a point off the plane).
     const double spacing = 0.5 * std::sqrt(test_plane().area() / 2000.0);
     const double sigma = 0.5 * spacing;
-    for (std::uint64_t seed : {731u, 732u, 733u}) {
+    for (std::uint64_t seed : {731u, 733u}) {
         INFO("seed " << seed);
-        const auto noisy = sample_shape(test_plane(), 2000, 0.5, seed);
-        const PCCD::Point_cloud_object<> object(columns(noisy.points));
+        const PCCD::Point_cloud_object<> object(columns(sample_shape(test_plane(), 2000, 0.5, seed).points));
         CHECK(object.noise_estimate() == object.scan().noise);
-        // Tolerance 20 % (measured: 0.995, 0.995 and 1.089 sigma for the three seeds).
+        // Tolerance 20 % (measured: 0.995 and 1.089 sigma for the two seeds).
         CHECK(object.noise_estimate() == Approx(sigma).epsilon(0.2));
-        // The object's estimate is that of its own kernel and map.
-        const PCCD::Geodesic_distance<> geodesic(object.cloud(), std::make_shared<const PCCD::Close_pairs_shortest_paths>(object.cpsp()));
-        CHECK(PCCD::noise_estimate(PCCD::estimate_normals(geodesic, object.weight())) == object.noise_estimate());
-
-        // The same plane without noise: the estimate is (nearly) zero (measured: exactly 0).
-        const auto clean = sample_shape(test_plane(), 2000, 0.0, seed);
-        const PCCD::Point_cloud_object<> flat(columns(clean.points));
-        CHECK(flat.noise_estimate() < 0.05 * spacing);
+        if (seed == 731) {
+            // The object's estimate is that of its own kernel and map.
+            const PCCD::Geodesic_distance<> geodesic(object.cloud(),
+                                                     std::make_shared<const PCCD::Close_pairs_shortest_paths>(object.cpsp()));
+            CHECK(PCCD::noise_estimate(PCCD::estimate_normals(geodesic, object.weight())) == object.noise_estimate());
+        }
     }
+    // The same plane without noise: the estimate is (nearly) zero (measured: exactly 0).
+    const PCCD::Point_cloud_object<> flat(columns(sample_shape(test_plane(), 2000, 0.0, 731).points));
+    CHECK(flat.noise_estimate() < 0.05 * spacing);
     // A noisy unit sphere: the estimate is the noise plus the curvature the kernel's plane cannot
     // follow (on the clean sphere alone it measures about 0.27 spacings); with sigma = 0.5
-    // spacings it is still within 20 % (measured 1.09 and 1.10 sigma).
+    // spacings it is still within 20 % (measured: 1.11 sigma).
     const double sphere_spacing = 0.5 * std::sqrt(unit_sphere().area() / 2000.0);
-    for (std::uint64_t seed : {734u, 735u}) {
-        INFO("sphere, seed " << seed);
-        const PCCD::Point_cloud_object<> object(columns(sample_shape(unit_sphere(), 2000, 0.5, seed).points));
-        CHECK(object.noise_estimate() == Approx(0.5 * sphere_spacing).epsilon(0.2));
-    }
+    const PCCD::Point_cloud_object<> sphere(columns(sample_shape(unit_sphere(), 2000, 0.5, 734).points));
+    CHECK(sphere.noise_estimate() == Approx(0.5 * sphere_spacing).epsilon(0.2));
 }
 
 TEST_CASE("a noise-aware weight widens the kernel only for heavy noise", "[surface]")
@@ -558,11 +579,6 @@ TEST_CASE("a point cloud object leaves out exactly the injected outliers", "[sur
     CHECK(kept.size() == 2020);
     CHECK(kept.scan().input_points == 2020);
     CHECK(kept.scan().outliers.empty());
-    // A clean sample loses nothing.
-    const PCCD::Point_cloud_object<> clean(columns(c.inliers));
-    CHECK(clean.scan().outliers.empty());
-    CHECK(clean.size() == 2000);
-    CHECK(clean.scan().input_points == 2000);
 }
 
 // ---------------------------------------------------------------------------------------------------
