@@ -246,8 +246,9 @@ Orientation_report orient_normals_with_hints(const Graph& g, const Eigen::Matrix
 
 /// Orients a Proximity_graph's points' normals with hints (its virtual edges are not followed).
 template <class Positions, class Hints>
-Orientation_report orient_normals_with_hints(const Proximity_graph& graph, const Eigen::MatrixBase<Positions>& positions,
-                                             Eigen::Matrix3Xd& normals, const Eigen::MatrixBase<Hints>& hints)
+Orientation_report orient_normals_with_hints(const Proximity_graph& graph,
+                                             const Eigen::MatrixBase<Positions>& positions, Eigen::Matrix3Xd& normals,
+                                             const Eigen::MatrixBase<Hints>& hints)
 {
     return orient_normals_with_hints(graph.graph(), positions, normals, hints, graph.virtual_map());
 }
