@@ -88,7 +88,7 @@ struct Preprocessing_times {
     double normals = 0.0;
     /// The point cloud hierarchy (rebuilt on load, like the kd-tree).
     double hierarchy = 0.0;
-    /// The local spacing: outlier test and domain radii (rebuilt on load).
+    /// The local spacing: outlier test and domain radii (0 for a loaded object, which reads them).
     double outliers = 0.0;
 };
 
@@ -101,7 +101,8 @@ struct Scan_estimate {
     std::vector<std::uint32_t> outliers;
     /// The estimated noise level sigma of the points (noise_estimate(): median leave-one-out
     /// residual / 0.6745), length unit of the cloud. On clean samples it is the curvature the
-    /// kernel's plane cannot follow, about 0.1 mean spacings.
+    /// kernel's plane cannot follow: 0.1-0.15 mean spacings on 30k-point scans, more on coarse
+    /// samples of curved shapes (0.27 on 2000 points of a sphere, 0.43 on a torus).
     double noise = 0.0;
 };
 

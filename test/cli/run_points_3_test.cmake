@@ -86,7 +86,8 @@ function(pccd_scan_run expected_error)
   set(PCCD_STDOUT "${out}" PARENT_SCOPE)
 endfunction()
 
-# info: the file is described; when it has normals, each point's is a hint, used or ignored.
+# info: the file is described; when it has normals, each point's is a hint, used or ignored (the
+# points left out as isolated outliers carry none).
 pccd_scan_run("${INFO_ERROR}" info ${FILE} --json)
 if("${INFO_ERROR}" STREQUAL "")
   string(JSON points GET "${PCCD_STDOUT}" points)
@@ -96,9 +97,10 @@ if("${INFO_ERROR}" STREQUAL "")
   endif()
   string(JSON hints_used GET "${PCCD_STDOUT}" normals hints_used)
   string(JSON hints_ignored GET "${PCCD_STDOUT}" normals hints_ignored)
-  math(EXPR hints "${hints_used} + ${hints_ignored}")
+  string(JSON outliers GET "${PCCD_STDOUT}" outliers count)
+  math(EXPR hints "${hints_used} + ${hints_ignored} + ${outliers}")
   if(from_file AND NOT hints EQUAL points)
-    message(FATAL_ERROR "info: ${hints_used} hints used + ${hints_ignored} ignored for ${points} points with normals")
+    message(FATAL_ERROR "info: ${hints_used} hints used + ${hints_ignored} ignored + ${outliers} outliers for ${points} points with normals")
   endif()
   if(NOT from_file AND NOT hints EQUAL 0)
     message(FATAL_ERROR "info: hints counted for a file without normals")

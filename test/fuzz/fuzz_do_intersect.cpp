@@ -271,14 +271,25 @@ void check_result(const PCCD::Intersection_result& r, const Query& q, const Obje
     if (r.status == PCCD::Intersection_status::budget_exhausted)
         require(o.max_f_evaluations.has_value(), "budget_exhausted without a budget");
     if (o.max_f_evaluations) require(c.f_evaluations <= *o.max_f_evaluations, "more f evaluations than the budget");
+    // With verified contacts (the default) every point is a projected, refined one, and the
+    // verification's steps count as refinement samples; without, the published behaviour.
+    const bool verified = o.verify_contacts;
+    const double tolerance = o.contact_tolerance.value_or(0.05 * r_min);
     if (q.first_hit) {
         require(r.points.size() <= 1, "do_intersect returned more than one point");
-        require(c.refinement_samples == 0, "do_intersect refined");
+        if (!verified) require(c.refinement_samples == 0, "do_intersect refined");
     }
-    if (o.refinement == PCCD::Refinement::none) require(c.refinement_samples == 0, "refinement none but refinement samples");
+    if (!verified && o.refinement == PCCD::Refinement::none)
+        require(c.refinement_samples == 0, "refinement none but refinement samples");
+    if (!verified) require(c.candidates_rejected == 0, "candidates rejected without verification");
 
     for (const PCCD::Intersection_point& p : r.points) {
         require(p.position.allFinite(), "a non-finite intersection point");
+        if (verified) {
+            require(p.kind == PCCD::Intersection_point_kind::refined, "a verified point that is not refined");
+            require(std::max(std::abs(p.f_a), std::abs(p.f_b)) <= tolerance, "a verified point with |f| > tolerance");
+            continue;
+        }
         switch (p.kind) {
         case PCCD::Intersection_point_kind::approximate:
             require(!q.rst, "an approximate point from randomized sampling");
@@ -296,7 +307,7 @@ void check_result(const PCCD::Intersection_result& r, const Query& q, const Obje
         }
     }
     // Kept points are farther apart than the spacing (refinement moves them afterwards).
-    if (!q.first_hit && (q.rst || o.refinement == PCCD::Refinement::none)) {
+    if (!q.first_hit && (verified || q.rst || o.refinement == PCCD::Refinement::none)) {
         const double spacing = o.point_spacing.value_or(std::max(a.sampling_radius(), b.sampling_radius()));
         for (std::size_t i = 0; i < r.points.size(); ++i)
             for (std::size_t j = i + 1; j < r.points.size(); ++j)
@@ -310,11 +321,12 @@ void check_result(const PCCD::Intersection_result& r, const Query& q, const Obje
                 "RST closest_estimate is NaN or negative");
         if (r.intersects) require(r.closest_estimate < epsilon, "RST intersects but closest_estimate >= epsilon");
         require(c.samples <= q.sampling.max_samples, "RST drew more than max_samples");
-        require(c.samples <= c.f_evaluations && c.f_evaluations <= 2 * c.samples,
-                "RST: f evaluations not between samples and twice the samples");
+        require(c.samples <= c.f_evaluations && c.f_evaluations <= 2 * c.samples + 2 * c.refinement_samples,
+                "RST: f evaluations not between samples and twice the samples and verification steps");
         require(c.brackets_tried == 0 && c.partner_candidates == 0 && c.brackets_found == 0 && c.search_steps == 0 &&
-                    c.bisection_steps == 0 && c.candidate_points == 0 && c.refinement_samples == 0,
+                    c.bisection_steps == 0 && c.candidate_points == 0,
                 "RST reported interpolation-search counters");
+        if (!verified) require(c.refinement_samples == 0, "unverified RST refined");
     } else {
         require(std::isnan(r.closest_estimate), "interpolation search set closest_estimate");
         // Per role at most `samples` when set, else max_samples for a first hit; intersection_points()
@@ -330,7 +342,7 @@ void check_result(const PCCD::Intersection_result& r, const Query& q, const Obje
         require(c.brackets_found <= c.partner_candidates, "more brackets found than partner candidates");
         require(c.bisection_steps <= c.search_steps, "more bisection steps than search steps");
         const std::size_t searched = c.partner_candidates + c.search_steps;
-        if (q.first_hit)
+        if (q.first_hit && !verified)
             require(c.f_evaluations == c.samples + searched,
                     "do_intersect: f evaluations != samples + partner candidates + search steps");
         else

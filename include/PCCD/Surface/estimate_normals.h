@@ -38,8 +38,8 @@ struct Normal_estimate {
 /// A robust estimate of the cloud's noise level sigma (standard deviation of the points' offsets
 /// from the surface): median |residual| / 0.6745 over the points with a residual (for Gaussian
 /// offsets the median absolute value is 0.6745 sigma). On a clean sample it is not 0 but the
-/// curvature the kernel's plane cannot follow (about 0.1 mean spacings on the scanned models of
-/// doc/benchmarks.md); 0 when no point has a residual.
+/// curvature the kernel's plane cannot follow (0.1-0.15 mean spacings on the 30k-point scans of
+/// doc/benchmarks.md, more on coarse samples of curved shapes); 0 when no point has a residual.
 inline double noise_estimate(const Normal_estimate& estimate)
 {
     std::vector<double> r;

@@ -1,5 +1,5 @@
-// PCCD/Surface/local_spacing.h -- the local spacing of a point cloud (doc/algorithms.md, "Surfaces
-// over real scans"): for every point, its distance to its k-th nearest other point, and optionally
+// PCCD/Surface/local_spacing.h -- the local spacing of a point cloud (doc/manual/surface.md,
+// "Scans"): for every point, its distance to its k-th nearest other point, and optionally
 // those k neighbours. The surface's domain (surface_domain.h) and the outlier test (outliers.h)
 // are both made of it.
 #pragma once
@@ -21,7 +21,7 @@ namespace PCCD {
 
 /// The local spacing of a cloud: l_i = distance from p_i to its k-th nearest other point (k capped
 /// at N - 1), and, when requested, the indices of those k neighbours (row-major, k per point,
-/// nearest first; the point itself is never among them unless it has k or more duplicates).
+/// nearest first; the point itself is never among them, its duplicates may be).
 struct Local_spacing {
     unsigned k = 0;
     Eigen::VectorXd spacing;

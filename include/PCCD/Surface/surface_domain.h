@@ -1,5 +1,5 @@
 // PCCD/Surface/surface_domain.h -- where the implicit surface of a point cloud is defined
-// (doc/algorithms.md, "Surfaces over real scans: the domain"): the zero set of a weighted
+// (doc/manual/surface.md, "Scans: where the surface is defined"): the zero set of a weighted
 // least-squares fit is meaningful only near the data; far from it (at the edge of the kernel's
 // support, where a handful of points decide the fit) it has spurious sheets. After Amenta and Kil's
 // domain of a point-set surface, f is defined at x only when x lies within a local,
