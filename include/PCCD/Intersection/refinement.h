@@ -75,6 +75,7 @@ std::optional<Intersection_point> refine_by_sampling(const Posed_object<OA>& a, 
 /// keeps the step finite where the normals are (nearly) parallel: coincident surfaces converge onto
 /// their common zero set, parallel surfaces a gap g apart stop at the middle with max(|f_A|, |f_B|)
 /// = g / 2. Stops when max(|f_A|, |f_B|) <= epsilon (returns the point), after `max_steps` steps,
+/// when a step shrinks max(|f_A|, |f_B|) by less than a tenth (stagnation),
 /// when a surface is undefined at the start (outside its support or domain, or degenerate), or
 /// when a step leaves the ball of `radius` around the start. A step that lands where a surface is
 /// undefined is halved back towards the previous point (twice at most per projection).
@@ -86,6 +87,7 @@ std::optional<Intersection_point> refine_by_projection(const Posed_object<OA>& a
     Eigen::Vector3d x = start;
     Eigen::Vector3d previous = start;
     int backtracks = 0;
+    double last_residual = std::numeric_limits<double>::infinity();
     for (int step = 0; step <= max_steps && !state.out_of_budget(); ++step) {
         ++state.counters.refinement_samples;
         const auto both = evaluate_both(a, b, x, state);
@@ -98,9 +100,12 @@ std::optional<Intersection_point> refine_by_projection(const Posed_object<OA>& a
             continue;
         }
         const auto& [ea, eb] = *both;
-        if (std::max(std::abs(ea.value), std::abs(eb.value)) <= epsilon)
-            return Intersection_point{x, ea.value, eb.value, Intersection_point_kind::refined};
-        if (step == max_steps) break;
+        const double residual = std::max(std::abs(ea.value), std::abs(eb.value));
+        if (residual <= epsilon) return Intersection_point{x, ea.value, eb.value, Intersection_point_kind::refined};
+        // Stagnation: a Gauss-Newton step that does not shrink the residual by a tenth will not reach
+        // epsilon (parallel surfaces a gap apart stop at their middle after one or two steps).
+        if (step == max_steps || residual > 0.9 * last_residual) break;
+        last_residual = residual;
         // Normals in world coordinates.
         const Eigen::Vector3d na = a.to_world.transform_vector(ea.normal);
         const Eigen::Vector3d nb = b.to_world.transform_vector(eb.normal);
