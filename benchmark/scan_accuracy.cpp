@@ -35,6 +35,7 @@ int main(int argc, char** argv)
     app.add_option("--domain-factor", object_options.domain.factor, "domain radius in k-th neighbour distances");
     app.add_option("--domain-neighbors", object_options.domain.neighbors, "k of the domain radius");
     double tolerance = 0.0;
+    app.add_option("--contact-core", query_options.contact_core, "fraction of the domain a contact must lie within");
     app.add_option("--contact-tolerance", tolerance, "verification tolerance in sampling radii (default: automatic)");
     bool no_domain = false, no_verify = false;
     app.add_flag("--no-domain", no_domain, "surfaces without a domain");

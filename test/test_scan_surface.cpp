@@ -722,6 +722,31 @@ TEST_CASE("invalid contact tolerances are rejected", "[intersection]")
     CHECK_THROWS_AS(PCCD::do_intersect(a, id, a, id, {.contact_tolerance = not_a_number}), PCCD::Invalid_input);
     CHECK_THROWS_AS(PCCD::intersection_points(a, id, a, id, {.contact_tolerance = std::numeric_limits<double>::infinity()}),
                     PCCD::Invalid_input);
+    for (const double core : {0.0, -0.5, 1.5, not_a_number})
+        CHECK_THROWS_AS(PCCD::do_intersect(a, id, a, id, {.contact_core = core}), PCCD::Invalid_input);
+    CHECK_NOTHROW(PCCD::do_intersect(a, id, a, id, {.contact_core = 1.0}));
+}
+
+TEST_CASE("verified contacts lie within the contact core of both domains", "[surface][intersection]")
+{
+    // Two crossing spheres: every verified point, evaluated independently in each object's frame, lies
+    // within contact_core times the domain radius of its nearest cloud point (brute force), for the
+    // default core and a tighter one.
+    const auto sa = sample_shape(unit_sphere(), 2000, 0.0, 951), sb = sample_shape(unit_sphere(), 2000, 0.0, 952);
+    const PCCD::Point_cloud_object<> a(columns(sa.points)), b(columns(sb.points));
+    const Rigid_transform_3<double> id, pose_b(Eigen::Matrix3d::Identity(), Eigen::Vector3d(1.2, 0.0, 0.0));
+    for (const double core : {0.7, 0.4}) {
+        const auto result = PCCD::intersection_points(a, id, b, pose_b, {.seed = 3, .contact_core = core});
+        REQUIRE(result.intersects);
+        for (const auto& p : result.points) {
+            const Eigen::Vector3d in_a = p.position, in_b = pose_b.inverse().transform_point(p.position);
+            Eigen::Index ia = 0, ib = 0;
+            const double da = std::sqrt((sa.points.colwise() - in_a).colwise().squaredNorm().minCoeff(&ia));
+            const double db = std::sqrt((sb.points.colwise() - in_b).colwise().squaredNorm().minCoeff(&ib));
+            CHECK(da <= core * a.domain_radii()(ia) * (1.0 + 1e-9));
+            CHECK(db <= core * b.domain_radii()(ib) * (1.0 + 1e-9));
+        }
+    }
 }
 
 // ---------------------------------------------------------------------------------------------------

@@ -78,11 +78,14 @@ std::optional<Intersection_point> refine_by_sampling(const Posed_object<OA>& a, 
 /// when a step shrinks max(|f_A|, |f_B|) by less than a tenth (stagnation),
 /// when a surface is undefined at the start (outside its support or domain, or degenerate), or
 /// when a step leaves the ball of `radius` around the start. A step that lands where a surface is
-/// undefined is halved back towards the previous point (twice at most per projection).
+/// undefined is halved back towards the previous point (twice at most per projection). A point
+/// reached farther than `core` times the domain radius from either cloud (Surface_evaluation::
+/// domain_fraction) is not accepted.
 template <class OA, class OB>
 std::optional<Intersection_point> refine_by_projection(const Posed_object<OA>& a, const Posed_object<OB>& b,
                                                        const Eigen::Vector3d& start, double radius, double epsilon,
-                                                       Query_state& state, int max_steps = 8, double damping = 1e-3)
+                                                       Query_state& state, int max_steps = 8, double damping = 1e-3,
+                                                       double core = 1.0)
 {
     Eigen::Vector3d x = start;
     Eigen::Vector3d previous = start;
@@ -101,7 +104,10 @@ std::optional<Intersection_point> refine_by_projection(const Posed_object<OA>& a
         }
         const auto& [ea, eb] = *both;
         const double residual = std::max(std::abs(ea.value), std::abs(eb.value));
-        if (residual <= epsilon) return Intersection_point{x, ea.value, eb.value, Intersection_point_kind::refined};
+        if (residual <= epsilon) {
+            if (!(std::max(ea.domain_fraction, eb.domain_fraction) <= core)) return std::nullopt;
+            return Intersection_point{x, ea.value, eb.value, Intersection_point_kind::refined};
+        }
         // Stagnation: a Gauss-Newton step that does not shrink the residual by a tenth will not reach
         // epsilon (parallel surfaces a gap apart stop at their middle after one or two steps).
         if (step == max_steps || residual > 0.9 * last_residual) break;

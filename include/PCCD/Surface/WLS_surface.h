@@ -74,6 +74,9 @@ struct Surface_evaluation {
     std::uint32_t neighbor_count = 0;
     /// The cloud point nearest to x (x's own index at a cloud point); no_point when outside_support.
     std::uint32_t nearest = no_point;
+    /// |x - p*| / D_{p*}: how deep in the surface's domain x lies (0 at a cloud point, 1 at the
+    /// domain's edge); 0 for a surface without a domain; NaN when outside_support.
+    double domain_fraction = std::numeric_limits<double>::quiet_NaN();
 
     bool defined() const { return status == Surface_status::defined; }
     /// f(x) when defined, std::nullopt otherwise.
@@ -203,13 +206,15 @@ public:
     const Eigen::Matrix3Xd& normals() const { return *m_normals; }
     /// The domain radii D_i (empty when the surface has no domain restriction).
     const Eigen::VectorXd& domain_radii() const { return *m_domain; }
-    /// True when x, whose nearest cloud point is `nearest`, lies in the surface's domain.
-    bool in_domain(const Eigen::Vector3d& x, Index nearest) const
+    /// |x - p*| / D_{p*} for x whose nearest cloud point is `nearest` (0 without a domain): x lies
+    /// in the surface's domain when it is <= 1.
+    double domain_fraction(const Eigen::Vector3d& x, Index nearest) const
     {
-        if (m_domain->size() == 0) return true;
-        const double limit = (*m_domain)(Eigen::Index(nearest));
-        return (m_distance.position(nearest) - x).squaredNorm() <= limit * limit;
+        if (m_domain->size() == 0) return 0.0;
+        return (m_distance.position(nearest) - x).norm() / (*m_domain)(Eigen::Index(nearest));
     }
+    /// True when x, whose nearest cloud point is `nearest`, lies in the surface's domain.
+    bool in_domain(const Eigen::Vector3d& x, Index nearest) const { return domain_fraction(x, nearest) <= 1.0; }
     /// @}
 
 private:
@@ -223,12 +228,12 @@ private:
     {
         Surface_evaluation result;
         if (!nearest || sums.count == 0 || !(sums.weight > 0.0)) return result;
-        if (!in_domain(x, *nearest)) {
+        result.nearest = *nearest;
+        result.domain_fraction = domain_fraction(x, *nearest);
+        if (!(result.domain_fraction <= 1.0)) {
             result.status = Surface_status::outside_domain;
-            result.nearest = *nearest;
             return result;
         }
-        result.nearest = *nearest;
         result.neighbor_count = sums.count;
         result.weight_sum = sums.weight;
         const internal::Wls_fit fit = internal::finish_fit(x, sums);
