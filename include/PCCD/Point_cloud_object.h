@@ -114,7 +114,8 @@ struct Scan_estimate {
 /// support radius R = h sqrt(-ln theta_eps), the unoriented normals n(p_i) of the geodesic surface
 /// with the noise estimate (and, when the noise asks for a wider kernel, CPSP map and normals once
 /// more with it: Bandwidth_options::noise_factor), their orientation (over the graph, with the
-/// normals the user gives as hints that decide the sign where they exist), and the surface's domain radii (Surface_domain_options).
+/// normals the user gives as hints that decide the sign where they exist), and the surface's
+/// domain radii (Surface_domain_options).
 ///
 /// \tparam K a model of PointCloudKernel.
 ///

@@ -38,7 +38,7 @@ enum class Surface_status : std::uint8_t {
     /// the nearest cloud point has no normal to orient n(x) by.
     degenerate = 2,
     /// x lies farther from its nearest cloud point p* than p*'s domain radius (the surface's
-    /// domain, doc/manual/surface.md "Where the surface is defined"): the fit may still be
+    /// domain, doc/manual/surface.md "Scans: where the surface is defined"): the fit may still be
     /// computable there, but its zero set would be a spurious sheet far from the data, so f, n and
     /// a are undefined.
     outside_domain = 3,
