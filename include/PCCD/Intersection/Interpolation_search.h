@@ -27,8 +27,11 @@ namespace PCCD {
 /// How the partners of a root-bracketing sample are chosen in its CPSP annulus.
 enum class Partner_choice : std::uint8_t {
     /// Candidates ranked by the first-order prediction f(p_i) + n(p_i) . (p_j - p_i) of the other
-    /// surface's f (the normal comes with the evaluation at p_i): the most strongly opposite-signed
-    /// first. Measured to find a bracket with fewer evaluations than random draws (doc/benchmarks.md).
+    /// surface's f (the normal comes with the evaluation at p_i): opposite-signed ones first, those
+    /// predicted half a sampling radius of the other surface across it first (deep enough to be
+    /// across despite the prediction's error, shallow enough to stay inside the other surface's
+    /// domain). Measured to find a bracket with fewer evaluations than random draws and than the
+    /// most strongly opposite first (doc/benchmarks.md).
     predicted = 0,
     /// Random candidates from the annulus, as in WSCG05.
     random = 1,
@@ -167,6 +170,7 @@ struct Interpolation_search {
         };
         const double r = sampled.sampling_radius();
         const double noise_band = sampled.noise_estimate();
+        const double partner_depth = 0.5 * tested.sampling_radius();
         std::uint32_t i = 0;
         while (!state.stop()) {
             // n = a ln a + c a samples of the region (an estimate until the region size is known).
@@ -196,7 +200,7 @@ struct Interpolation_search {
             ++state.counters.brackets_tried;
             const auto [first, last] = annulus_range(cpsp, i, inner, rho);
             if (first >= last) continue;
-            choose_partners(sampled, s_to_t, cpsp, i, first, last, ei, ranked, state);
+            choose_partners(sampled, s_to_t, cpsp, i, first, last, ei, partner_depth, ranked, state);
             for (const auto& [score, entry] : ranked) {
                 if (state.out_of_budget()) return;
                 const std::uint32_t j = cpsp.targets(i)[entry];
@@ -241,8 +245,8 @@ private:
     template <class S, class Map>
     void choose_partners(const internal::Posed_object<S>& sampled, const Rigid_transform_3<double>& s_to_t,
                          const Map& cpsp, std::uint32_t i, std::size_t first, std::size_t last,
-                         const Surface_evaluation& ei, std::vector<std::pair<double, std::uint32_t>>& ranked,
-                         internal::Query_state& state) const
+                         const Surface_evaluation& ei, double depth,
+                         std::vector<std::pair<double, std::uint32_t>>& ranked, internal::Query_state& state) const
     {
         ranked.clear();
         const auto targets = cpsp.targets(i);
@@ -257,14 +261,18 @@ private:
             }
             return;
         }
-        // Predicted f_T at p_j: f_T(p_i) + n_T(p_i) . (p_j - p_i), all in T's frame; candidates whose
-        // prediction has the opposite sign, most strongly opposite first.
+        // Predicted f_T at p_j: f_T(p_i) + n_T(p_i) . (p_j - p_i), all in T's frame. Candidates whose
+        // prediction has the opposite sign come first, those predicted `depth` across T first: deep
+        // enough to be across it despite the prediction's error, not so deep that T's surface is
+        // undefined there (its domain ends about one sampling radius from its points).
         const Eigen::Vector3d pi = s_to_t.transform_point(sampled.position(i));
         const double sign = ei.value < 0.0 ? -1.0 : 1.0;
         for (std::size_t e = first; e < last; ++e) {
             const Eigen::Vector3d pj = s_to_t.transform_point(sampled.position(targets[e]));
-            const double predicted = ei.value + ei.normal.dot(pj - pi);
-            ranked.emplace_back(sign * predicted, std::uint32_t(e));
+            const double predicted = sign * (ei.value + ei.normal.dot(pj - pi));
+            // Opposite: a key in [-1, 0), -1 at the preferred depth; same sign: the key >= 0.
+            const double key = predicted < 0.0 ? -1.0 / (1.0 + std::abs(-predicted - depth) / depth) : predicted;
+            ranked.emplace_back(key, std::uint32_t(e));
         }
         const std::size_t count = std::min(partner_candidates, ranked.size());
         std::partial_sort(ranked.begin(), ranked.begin() + std::ptrdiff_t(count), ranked.end());
