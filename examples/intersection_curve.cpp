@@ -1,7 +1,7 @@
 // Points on the intersection curves of two point cloud surfaces, at a density the caller chooses
 // (ALGORITHMS.md section 6): a sphere and a torus whose tube straddles it meet in two circles.
 // intersection_points() searches the whole overlap, keeps points at least point_spacing apart and
-// refines each approximate point onto both surfaces; the result is written to a PLY file
+// projects each candidate onto both surfaces (verified contacts); the result is written to a PLY file
 // (argument 1, default intersection_curve.ply) and compared with the exact curves.
 #include <PCCD/IO/write_points.h>
 #include <PCCD/Intersection/do_intersect.h>
@@ -34,11 +34,11 @@ int main(int argc, char** argv)
     const Object a(columns(sphere.sample(8000, engine).points));
     const Object b(columns(torus.sample(8000, engine).points));
 
-    // Both objects in place (identity poses); one point every 0.05 along the curves, each refined by
-    // projection onto f_A = f_B = 0.
+    // Both objects in place (identity poses); one point every 0.05 along the curves, each a verified
+    // contact: projected onto f_A = f_B = 0 inside both surfaces' domains.
     const PCCD::Rigid_transform_3<double> identity;
-    const PCCD::Intersection_result result = PCCD::intersection_points(
-        a, identity, b, identity, {.seed = 11, .refinement = PCCD::Refinement::projection, .point_spacing = 0.05});
+    const PCCD::Intersection_result result =
+        PCCD::intersection_points(a, identity, b, identity, {.seed = 11, .point_spacing = 0.05});
 
     PCCD::Point_data data;
     double worst = 0.0;
