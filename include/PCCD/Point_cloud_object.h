@@ -443,6 +443,7 @@ public:
     }
     void write(const void* data, std::size_t size)
     {
+        if (size == 0) return;
         const auto* bytes = static_cast<const char*>(data);
         m_bytes.insert(m_bytes.end(), bytes, bytes + size);
     }
@@ -466,6 +467,7 @@ public:
     void read(void* data, std::size_t size)
     {
         if (m_bytes.size() - m_position < size) fail("truncated file");
+        if (size == 0) return; // an empty array's data() may be null, which memcpy must not see
         std::memcpy(data, m_bytes.data() + m_position, size);
         m_position += size;
     }
