@@ -1,5 +1,5 @@
 // baseline_benchmark: the alternatives a user has today, timed on the benchmark poses of
-// ALGORITHMS.md section 8 and scored against CGAL's exact answer (issue 5). Two copies of the
+// doc/manual/sampling.md (the pose generator) and scored against CGAL's exact answer. Two copies of the
 // Stanford bunny (libcgal-demo), normalized into [-1, 1]^3; A at [R_A | 0], B at [R_B | (d, 0, 0)].
 // Methods (benchmark/collision_baselines.h), each single-threaded and stopping at the first contact:
 //   fcl        FCL 0.7, OBBRSS hierarchies over the two meshes (the mesh the cloud was sampled from)

@@ -1,5 +1,5 @@
 // benchmark/collision_baselines.h -- what a user can do today instead of PCCD, as baselines for the
-// intersection benchmarks (ALGORITHMS.md section 8): collide the meshes the clouds came from with
+// intersection benchmarks (the poses of doc/manual/sampling.md): collide the meshes the clouds came from with
 // FCL, or call two clouds colliding when some pair of their points is closer than a threshold.
 // Used by benchmark programs only; not part of the library (it needs FCL, which PCCD does not).
 //

@@ -1,5 +1,5 @@
-// intersection_benchmark: WSCG05's evaluation figures for PCCD's do_intersect (issue 5, item 6), on
-// the poses of ALGORITHMS.md section 8. Two copies of the Stanford bunny (libcgal-demo's
+// intersection_benchmark: WSCG05's evaluation figures for PCCD's do_intersect, on
+// the benchmark poses of doc/manual/sampling.md. Two copies of the Stanford bunny (libcgal-demo's
 // bunny00.off), normalized into [-1, 1]^3; A at [R_A | 0], B at [R_B | (d, 0, 0)]. The cloud is the
 // mesh's vertices, or --points N area-uniform samples of the mesh. Every query runs on one thread,
 // one at a time, stops at the first intersection, and is timed with steady_clock as the median of
@@ -126,7 +126,7 @@ double mean(const std::vector<double>& values)
     return std::accumulate(values.begin(), values.end(), 0.0) / double(values.size());
 }
 
-/// The bunny mesh normalized into [-1, 1]^3 (ALGORITHMS.md section 8), or nothing without the data.
+/// The bunny mesh normalized into [-1, 1]^3 (the benchmark procedure, doc/manual/sampling.md), or nothing without the data.
 std::optional<PCCD::Triangle_mesh_data> read_bunny()
 {
     const std::filesystem::path path = std::filesystem::path(PCCD_DATA_DIR) / "bunny00.off";

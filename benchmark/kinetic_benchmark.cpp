@@ -1,4 +1,4 @@
-// Kinetic AABB tree benchmark (ALGORITHMS.md section 7): the talk's table cloth scene at about
+// Kinetic AABB tree benchmark (doc/manual/kinetic.md): the talk's table cloth scene at about
 // 1,684, 6,891 and 15,503 triangles, played at 30, 60 and 120 query frames per second with the
 // kinetic tree, bottom-up refit and full rebuild. Writes one CSV row per (size, rate, method) with
 // the BV update and event counts (deterministic) and the median time per frame over repeated runs,

@@ -1,4 +1,4 @@
-// Evaluations of the implicit surface f per second (ALGORITHMS.md section 1), single-threaded:
+// Evaluations of the implicit surface f per second (doc/manual/surface.md), single-threaded:
 // at cloud points (by index) and at arbitrary points, Euclidean vs geodesic kernel, and the CPSP
 // lists against kd-tree radius queries for the *same* f.
 //

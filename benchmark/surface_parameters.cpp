@@ -1,5 +1,5 @@
 // Accuracy of the implicit surface against the exact signed distance as a function of the kernel
-// parameters eta and theta_eps (ALGORITHMS.md section 1), the measurement behind the defaults in
+// parameters eta and theta_eps (doc/manual/surface.md), the measurement behind the defaults in
 // PCCD/Surface/bandwidth.h (table in doc/manual/surface.md, "Choosing eta and theta_eps").
 //
 // Usage: surface_parameters [eta theta_eps]  (default: the grid eta 1.5..3 x theta_eps 1e-2..1e-4)
