@@ -66,7 +66,8 @@ nlohmann::json describe_file(const std::string& path)
     out["timings_ms"]["kd_tree"] = t.kd_tree;
     out["bbox"] = {{"min", vector_json(cloud.bbox().min())}, {"max", vector_json(cloud.bbox().max())}};
     start = Clock::now();
-    out["mean_spacing"] = cloud.mean_spacing();
+    const double mean_spacing = cloud.mean_spacing();
+    out["mean_spacing"] = mean_spacing;
     out["timings_ms"]["mean_spacing"] = ms_since(start);
     out["timings_ms"]["sampling_radius"] = t.sampling_radius;
     out["sampling_radius"] = object.sampling_radius();
@@ -92,7 +93,7 @@ nlohmann::json describe_file(const std::string& path)
     out["normals"]["hints_ignored"] = orientation.hints_ignored;
     out["normals"]["unhinted_components"] = orientation.unhinted_components;
     // The cloud as a scan: noise estimate, isolated outliers left out, the surface's domain.
-    out["noise"] = {{"sigma", object.noise_estimate()}, {"sigma_in_spacings", object.noise_estimate() / cloud.mean_spacing()}};
+    out["noise"] = {{"sigma", object.noise_estimate()}, {"sigma_in_spacings", object.noise_estimate() / mean_spacing}};
     out["outliers"] = {{"count", object.scan().outliers.size()}, {"input_points", object.scan().input_points}};
     if (object.domain_radii().size() > 0)
         out["domain"] = {{"median_radius", median_of(object.domain_radii())}};

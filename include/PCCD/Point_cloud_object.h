@@ -5,6 +5,7 @@
 // hierarchy of section 4) attach to it.
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
@@ -326,13 +327,11 @@ private:
                     std::move(euclidean),   std::move(hierarchy)};
     }
 
-    /// Removes the outliers of `cloud` (and their given normals) in place; returns their indices.
-    static std::vector<std::uint32_t> remove_outliers(Point_cloud<K>& cloud, std::optional<Eigen::Matrix3Xd>& given_normals,
-                                                      const Outlier_options& options)
+    /// Removes the points `outliers` (ascending indices) of `cloud`, and their given normals, in place.
+    static void remove_outliers(Point_cloud<K>& cloud, std::optional<Eigen::Matrix3Xd>& given_normals,
+                                const std::vector<std::uint32_t>& outliers)
     {
-        if (!options.remove) return {};
-        std::vector<std::uint32_t> outliers = find_outliers(cloud, options);
-        if (outliers.empty()) return outliers;
+        if (outliers.empty()) return;
         if (cloud.size() - outliers.size() < 2)
             throw Invalid_input(internal::concat("point cloud object: ", outliers.size(), " of the ", cloud.size(),
                                                  " points are isolated outliers; fewer than two points are left"));
@@ -352,7 +351,6 @@ private:
         }
         cloud = Point_cloud<K>(std::move(inliers));
         if (given_normals) given_normals = std::move(normals);
-        return outliers;
     }
 
     static std::shared_ptr<const Data> preprocess(Timed_cloud built, std::optional<Eigen::Matrix3Xd> given_normals,
@@ -377,7 +375,15 @@ private:
             options.domain.threads = options.outliers.threads = options.threads;
         Scan_estimate scan;
         scan.input_points = cloud.size();
-        scan.outliers = remove_outliers(cloud, given_normals, options.outliers);
+        // One local-spacing pass serves the outlier test and, when no point was removed and both
+        // use the same k, the domain radii below.
+        std::optional<Local_spacing> spacing;
+        if (options.outliers.remove) {
+            spacing = local_spacing(cloud, options.outliers.neighbors, true, options.threads);
+            scan.outliers = find_outliers(*spacing, options.outliers);
+            remove_outliers(cloud, given_normals, scan.outliers);
+            if (!scan.outliers.empty()) spacing.reset(); // the cloud changed
+        }
         timings.outliers = ms_since(start);
 
         start = Clock::now();
@@ -417,7 +423,9 @@ private:
                           : orient_normals(*graph, cloud.coordinates(), estimate.normals);
         timings.normals += ms_since(start);
         start = Clock::now();
-        Eigen::VectorXd domain = surface_domain_radii(cloud, options.domain);
+        const bool reuse = spacing && spacing->k == std::min<std::size_t>(options.domain.neighbors, cloud.size() - 1);
+        Eigen::VectorXd domain = reuse ? surface_domain_radii(*spacing, options.domain)
+                                       : surface_domain_radii(cloud, options.domain);
         timings.outliers += ms_since(start);
 
         return std::make_shared<const Data>(make_data(std::move(cloud), std::move(graph), std::move(cpsp), r, weight,
