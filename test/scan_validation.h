@@ -191,7 +191,6 @@ struct Scan_row {
     std::size_t points = 0;
     Error_tally isearch, rst, naive;
     double isearch_mean_us = 0.0, rst_mean_us = 0.0;
-    std::size_t isearch_rejected = 0, rst_rejected = 0;
 };
 
 inline double us_since(std::chrono::steady_clock::time_point start)
@@ -221,8 +220,6 @@ inline Scan_row evaluate_first_hits(const Scan_model& model, const Scan_conditio
         const auto rst = PCCD::do_intersect(o, t.pose.pose_a, o, t.pose.pose_b, options, PCCD::Randomized_sampling{});
         t_rst += us_since(start);
         const bool naive = naive_point_test(*cloud.raw, t.pose.pose_a, *cloud.raw, t.pose.pose_b, cloud.spacing);
-        row.isearch_rejected += is.counters.candidates_rejected;
-        row.rst_rejected += rst.counters.candidates_rejected;
         row.isearch.add(t.cls, is.intersects);
         row.rst.add(t.cls, rst.intersects);
         row.naive.add(t.cls, naive);

@@ -44,7 +44,7 @@ Intersection_result run_query(const A& a, const Rigid_transform_3<double>& pose_
         const double reach = 2.0 * std::max(pa.sampling_radius(), pb.sampling_radius());
         const double core = options.contact_core;
         state.verifier = [&pa, &pb, &state, tolerance, reach, core](const Intersection_point& candidate) {
-            return refine_by_projection(pa, pb, candidate.position, reach, tolerance, state, 8, 1e-3, core);
+            return refine_by_projection(pa, pb, candidate.position, reach, tolerance, state, core);
         };
     }
     policy.run(pa, pb, options, epsilon, state, result.closest_estimate);

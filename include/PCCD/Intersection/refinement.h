@@ -84,8 +84,8 @@ std::optional<Intersection_point> refine_by_sampling(const Posed_object<OA>& a, 
 template <class OA, class OB>
 std::optional<Intersection_point> refine_by_projection(const Posed_object<OA>& a, const Posed_object<OB>& b,
                                                        const Eigen::Vector3d& start, double radius, double epsilon,
-                                                       Query_state& state, int max_steps = 8, double damping = 1e-3,
-                                                       double core = 1.0)
+                                                       Query_state& state, double core = 1.0, int max_steps = 8,
+                                                       double damping = 1e-3)
 {
     Eigen::Vector3d x = start;
     Eigen::Vector3d previous = start;

@@ -213,8 +213,6 @@ public:
         if (m_domain->size() == 0) return 0.0;
         return (m_distance.position(nearest) - x).norm() / (*m_domain)(Eigen::Index(nearest));
     }
-    /// True when x, whose nearest cloud point is `nearest`, lies in the surface's domain.
-    bool in_domain(const Eigen::Vector3d& x, Index nearest) const { return domain_fraction(x, nearest) <= 1.0; }
     /// @}
 
 private:
