@@ -32,6 +32,10 @@ int main(int argc, char** argv)
     app.add_option("--pose-seed", pose_seed, "seed of the poses");
     app.add_flag("--verbose", verbose, "print every wrong non-grazing answer");
     app.add_option("--eta", object_options.bandwidth.eta, "kernel support in sampling radii");
+    app.add_option("--noise-factor", object_options.bandwidth.noise_factor,
+                   "support radius at least this many noise estimates (0: off)");
+    std::string fit = "sphere";
+    app.add_option("--fit", fit, "surface fit: sphere or plane")->check(CLI::IsMember({"sphere", "plane"}));
     app.add_option("--domain-factor", object_options.domain.factor, "domain radius in k-th neighbour distances");
     app.add_option("--domain-neighbors", object_options.domain.neighbors, "k of the domain radius");
     double tolerance = 0.0;
@@ -46,6 +50,7 @@ int main(int argc, char** argv)
         return 1;
     }
     object_options.domain.enabled = !no_domain;
+    object_options.surface_fit = fit == "plane" ? PCCD::Surface_fit::plane : PCCD::Surface_fit::sphere;
     query_options.verify_contacts = !no_verify;
     const auto all = pccd_test::scan_conditions();
     if (conditions.empty())
@@ -70,9 +75,9 @@ int main(int argc, char** argv)
                 char line[256];
                 std::snprintf(line, sizeof line,
                               "%-14s %-24s curves: %zu poses, %zu points, distance median %.3f p95 %.3f max %.3f "
-                              "spacings, coverage %.1f %%",
+                              "spacings (%zu near-contact points, max elsewhere %.3f), coverage %.1f %%",
                               file.c_str(), condition.name.c_str(), f.poses, f.points, f.median, f.p95, f.max,
-                              100.0 * f.coverage);
+                              f.near_contacts, f.max_elsewhere, 100.0 * f.coverage);
                 std::printf("%s\n", line);
                 curve_lines.push_back(line);
             }

@@ -545,12 +545,12 @@ TEST_CASE("the noise estimate recovers the sampling noise", "[surface]")
 TEST_CASE("a noise-aware weight widens the kernel only for heavy noise", "[surface]")
 {
     const PCCD::Gaussian_weight weight(0.1, 0.01); // support 0.1 sqrt(ln 100) = 0.2146
-    CHECK_FALSE(PCCD::noise_aware_weight(weight, 0.01).has_value());  // 10 sigma = 0.1 < support
+    CHECK_FALSE(PCCD::noise_aware_weight(weight, 0.01).has_value());  // 15 sigma = 0.15 < support
     CHECK_FALSE(PCCD::noise_aware_weight(weight, 0.0).has_value());
     CHECK_FALSE(PCCD::noise_aware_weight(weight, not_a_number).has_value());
-    const auto wider = PCCD::noise_aware_weight(weight, 0.05); // 10 sigma = 0.5
+    const auto wider = PCCD::noise_aware_weight(weight, 0.05); // 15 sigma = 0.75
     REQUIRE(wider.has_value());
-    CHECK(wider->support_radius() == Approx(0.5).epsilon(1e-12));
+    CHECK(wider->support_radius() == Approx(0.75).epsilon(1e-12));
     CHECK(wider->threshold() == 0.01);
     CHECK(PCCD::noise_aware_weight(weight, 0.05, {.noise_factor = 20.0})->support_radius() == Approx(1.0).epsilon(1e-12));
     CHECK_FALSE(PCCD::noise_aware_weight(weight, 0.05, {.noise_factor = 0.0}).has_value());
@@ -787,8 +787,9 @@ TEST_CASE("an object with outliers and noise saves and loads back identical", "[
     }
     CHECK(outside_domain > 0); // the domain took part in the comparison
 
-    // A version 1 file (the same bytes without the scan section) still loads: no outliers, noise
-    // 0, the domain of the default options.
+    // Older files still load. Version 2 (the same bytes without the fit byte): the plane fit it was
+    // made with. Version 1 (without the scan section and the fit byte): no outliers, noise 0, the
+    // domain of the default options, the plane fit.
     std::string bytes;
     {
         std::ifstream in(path, std::ios::binary);
@@ -798,22 +799,36 @@ TEST_CASE("an object with outliers and noise saves and loads back identical", "[
     const std::size_t header = 8 + 4 + 4 + 8 + 3 * 8 + 1 + 3 * 8 + 5 * 8;
     const std::size_t scan_begin = header + 2 * 3 * 8 * n;
     const std::size_t scan_size = 8 + 8 + 8 + 4 * object.scan().outliers.size() + 8 + 8 * std::size_t(object.domain_radii().size());
+    const std::size_t fit_at = scan_begin + scan_size;
     std::uint64_t stored_n = 0;
     std::memcpy(&stored_n, bytes.data() + 16, 8);
     REQUIRE(stored_n == n);
     double stored_noise = 0.0;
     std::memcpy(&stored_noise, bytes.data() + scan_begin, 8);
     REQUIRE(stored_noise == object.noise_estimate()); // the layout assumed here is the file's
-    std::string v1 = bytes.substr(0, scan_begin) + bytes.substr(scan_begin + scan_size, bytes.size() - 8 - scan_begin - scan_size);
-    const std::uint32_t version = 1;
-    std::memcpy(v1.data() + 8, &version, 4);
-    PCCD::internal::Word_checksum checksum;
-    checksum.update(v1.data(), v1.size());
-    const std::uint64_t sum = checksum.value();
-    v1.append(reinterpret_cast<const char*>(&sum), 8);
-    const std::string v1_path = std::string(PCCD_TEST_TMP_DIR) + "/scan_surface_v1.pccdobj";
-    std::ofstream(v1_path, std::ios::binary).write(v1.data(), std::streamsize(v1.size()));
-    const auto old = PCCD::Point_cloud_object<>::load(v1_path);
+    REQUIRE(object.surface().fit() == PCCD::Surface_fit::sphere);
+    REQUIRE(std::uint8_t(bytes[fit_at]) == std::uint8_t(PCCD::Surface_fit::sphere));
+    CHECK(loaded.surface().fit() == PCCD::Surface_fit::sphere);
+    CHECK(loaded.euclidean_surface().fit() == PCCD::Surface_fit::sphere);
+    // The bytes without [begin, end), as a file of `version` with a fresh checksum.
+    const auto older = [&](std::size_t begin, std::size_t end, std::uint32_t version, const char* name) {
+        std::string b = bytes.substr(0, begin) + bytes.substr(end, bytes.size() - 8 - end);
+        std::memcpy(b.data() + 8, &version, 4);
+        PCCD::internal::Word_checksum checksum;
+        checksum.update(b.data(), b.size());
+        const std::uint64_t sum = checksum.value();
+        b.append(reinterpret_cast<const char*>(&sum), 8);
+        const std::string older_path = std::string(PCCD_TEST_TMP_DIR) + "/" + name;
+        std::ofstream(older_path, std::ios::binary).write(b.data(), std::streamsize(b.size()));
+        return PCCD::Point_cloud_object<>::load(older_path);
+    };
+    const auto v2 = older(fit_at, fit_at + 1, 2, "scan_surface_v2.pccdobj");
+    CHECK(v2.surface().fit() == PCCD::Surface_fit::plane);
+    CHECK(v2.euclidean_surface().fit() == PCCD::Surface_fit::plane);
+    CHECK(v2.noise_estimate() == object.noise_estimate());
+    CHECK(v2.normals() == object.normals());
+    const auto old = older(scan_begin, fit_at + 1, 1, "scan_surface_v1.pccdobj");
+    CHECK(old.surface().fit() == PCCD::Surface_fit::plane);
     CHECK(old.size() == n);
     CHECK(old.scan().input_points == n);
     CHECK(old.scan().outliers.empty());

@@ -75,7 +75,8 @@ TEST_CASE("thin sheets: the Euclidean kernel bleeds across the gap, the geodesic
         const PCCD::Point_cloud_object<> object(
             columns(sample.points), PCCD::Identity_point_map<Eigen::Vector3d>(),
             {.bandwidth = {.theta_eps = theta, .bandwidth = R / std::sqrt(-std::log(theta))},
-             .domain = {.enabled = false}}); // the kernels themselves; the domain is checked below
+             .surface_fit = PCCD::Surface_fit::plane,
+             .domain = {.enabled = false}}); // the kernels themselves (published plane fit); the domain is checked below
         REQUIRE(object.weight().support_radius() == Approx(R));
         const double s = object.cloud().mean_spacing();
 

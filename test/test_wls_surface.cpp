@@ -270,30 +270,60 @@ namespace {
 
 // Brute force over all points: the definition of ALGORITHMS.md section 1 with Eigen's iterative
 // solver; `distance(j)` gives d(x, p_j).
+//
+// With `normals` (the sphere fit, doc/manual/surface.md "The fit: plane or sphere"): the algebraic
+// sphere s(y) = u0 + u . y + u4 |y|^2 whose gradient best matches the normals in the weighted
+// least-squares sense (a 4 x 4 system solved by Eigen's LDLT, not the closed form), u0 from the
+// points, and f = the signed geometric distance from x to that sphere (centre and radius).
 template <class Distance>
 std::optional<std::pair<double, Eigen::Vector3d>> brute_force_f(const Eigen::Matrix3Xd& points,
                                                                 const Eigen::Vector3d& x, const Eigen::Vector3d& sign,
-                                                                double h, double R, const Distance& distance)
+                                                                double h, double R, const Distance& distance,
+                                                                const Eigen::Matrix3Xd* normals = nullptr)
 {
     double W = 0.0;
     Eigen::Vector3d a = Eigen::Vector3d::Zero();
-    std::vector<std::pair<double, Eigen::Vector3d>> used;
+    std::vector<std::pair<double, Eigen::Index>> used;
     for (Eigen::Index j = 0; j < points.cols(); ++j) {
         const double d = distance(j);
         if (!(d <= R)) continue;
         const double w = std::exp(-d * d / (h * h));
         W += w;
         a += w * points.col(j);
-        used.emplace_back(w, points.col(j));
+        used.emplace_back(w, j);
     }
     if (used.empty()) return std::nullopt;
     a /= W;
     Eigen::Matrix3d B = Eigen::Matrix3d::Zero();
-    for (const auto& [w, p] : used) B += w * (p - a) * (p - a).transpose();
+    for (const auto& [w, j] : used) B += w * (points.col(j) - a) * (points.col(j) - a).transpose();
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(B);
     Eigen::Vector3d n = solver.eigenvectors().col(0);
     if (n.dot(sign) < 0.0) n = -n;
-    return std::pair(n.dot(x - a), n);
+    if (!normals) return std::pair(n.dot(x - a), n);
+    // Gradient u + 2 u4 y_j against n_j: rows [I | 2 y_j] (u, u4) = n_j, weighted normal equations.
+    Eigen::Matrix4d M = Eigen::Matrix4d::Zero();
+    Eigen::Vector4d rhs = Eigen::Vector4d::Zero();
+    for (const auto& [w, j] : used) {
+        const Eigen::Vector3d y = points.col(j) - x;
+        Eigen::Matrix<double, 3, 4> row;
+        row << Eigen::Matrix3d::Identity(), 2.0 * y;
+        M += w * row.transpose() * row;
+        rhs += w * row.transpose() * normals->col(j);
+    }
+    const Eigen::Vector4d g = M.ldlt().solve(rhs);
+    const Eigen::Vector3d u = g.head<3>();
+    const double u4 = g(3);
+    double u0 = 0.0;
+    for (const auto& [w, j] : used) {
+        const Eigen::Vector3d y = points.col(j) - x;
+        u0 -= w * (u.dot(y) + u4 * y.squaredNorm());
+    }
+    u0 /= W;
+    if (std::abs(u4) < 1e-12) return std::pair(u0 / u.norm(), Eigen::Vector3d(u.normalized()));
+    const Eigen::Vector3d centre = -u / (2.0 * u4); // relative to x
+    const double radius = std::sqrt(centre.squaredNorm() - u0 / u4);
+    const double side = u4 > 0.0 ? 1.0 : -1.0; // s > 0 outside the sphere when u4 > 0
+    return std::pair(side * (centre.norm() - radius), Eigen::Vector3d(-side * centre.normalized()));
 }
 
 } // namespace
@@ -301,40 +331,47 @@ std::optional<std::pair<double, Eigen::Vector3d>> brute_force_f(const Eigen::Mat
 TEST_CASE("evaluation agrees with a brute-force evaluation of the definition", "[surface]")
 {
     const auto sample = sample_shape(test_torus(), 3000, 0.2, 21);
-    const Object object(columns(sample.points), identity, no_domain);
-    const Eigen::Matrix3Xd& P = sample.points;
-    const double h = object.bandwidth(), R = object.weight().support_radius();
-    const double s = object.cloud().mean_spacing();
-    // Geodesic truth: full Dijkstra over the graph (non-virtual edges) from the brute-force nearest.
-    const auto& g = object.graph();
-    for (const Query& q : queries_near(test_torus(), 40, 2.0 * s, 23)) {
-        Eigen::Index nearest = 0;
-        (P.colwise() - q.x).colwise().squaredNorm().minCoeff(&nearest);
-        const Eigen::Vector3d sign = object.normals().col(nearest);
-        const auto euclid = brute_force_f(P, q.x, sign, h, R, [&](Eigen::Index j) { return (P.col(j) - q.x).norm(); });
-        const auto ev = object.euclidean_surface().evaluate(q.x);
-        REQUIRE(euclid.has_value());
-        REQUIRE(ev.defined());
-        CHECK(ev.nearest == std::uint32_t(nearest));
-        CHECK(std::abs(ev.value - euclid->first) <= 1e-9 * s);
-        CHECK((ev.normal - euclid->second).norm() <= 1e-9);
+    for (const PCCD::Surface_fit fit : {PCCD::Surface_fit::plane, PCCD::Surface_fit::sphere}) {
+        INFO("fit " << PCCD::to_string(fit));
+        PCCD::Point_cloud_object_options options = no_domain;
+        options.surface_fit = fit;
+        const Object object(columns(sample.points), identity, options);
+        const Eigen::Matrix3Xd* normals = fit == PCCD::Surface_fit::sphere ? &object.normals() : nullptr;
+        const Eigen::Matrix3Xd& P = sample.points;
+        const double h = object.bandwidth(), R = object.weight().support_radius();
+        const double s = object.cloud().mean_spacing();
+        // Geodesic truth: full Dijkstra over the graph (non-virtual edges) from the brute-force nearest.
+        const auto& g = object.graph();
+        for (const Query& q : queries_near(test_torus(), 40, 2.0 * s, 23)) {
+            Eigen::Index nearest = 0;
+            (P.colwise() - q.x).colwise().squaredNorm().minCoeff(&nearest);
+            const Eigen::Vector3d sign = object.normals().col(nearest);
+            const auto euclid =
+                brute_force_f(P, q.x, sign, h, R, [&](Eigen::Index j) { return (P.col(j) - q.x).norm(); }, normals);
+            const auto ev = object.euclidean_surface().evaluate(q.x);
+            REQUIRE(euclid.has_value());
+            REQUIRE(ev.defined());
+            CHECK(ev.nearest == std::uint32_t(nearest));
+            CHECK(std::abs(ev.value - euclid->first) <= 1e-9 * s);
+            CHECK((ev.normal - euclid->second).norm() <= 1e-9);
 
-        std::vector<double> graph_distance(g.num_vertices());
-        const auto weights = boost::make_function_property_map<PCCD::Proximity_graph::edge_descriptor>(
-            [&](const PCCD::Proximity_graph::edge_descriptor& e) {
-                return g.graph()[e].is_virtual ? std::numeric_limits<double>::infinity()
-                                               : double(g.graph()[e].length);
-            });
-        boost::dijkstra_shortest_paths(g.graph(), PCCD::Proximity_graph::vertex_descriptor(nearest),
-                                       boost::weight_map(weights).distance_map(graph_distance.data()));
-        const double offset = (P.col(nearest) - q.x).norm();
-        const auto geodesic =
-            brute_force_f(P, q.x, sign, h, R, [&](Eigen::Index j) { return offset + graph_distance[std::size_t(j)]; });
-        const auto gv = object.surface().evaluate(q.x);
-        REQUIRE(geodesic.has_value());
-        if (!gv.defined()) continue; // degenerate fits are covered elsewhere
-        // The CPSP map stores distances as floats: agreement to float precision.
-        CHECK(std::abs(gv.value - geodesic->first) <= 1e-4 * s);
+            std::vector<double> graph_distance(g.num_vertices());
+            const auto weights = boost::make_function_property_map<PCCD::Proximity_graph::edge_descriptor>(
+                [&](const PCCD::Proximity_graph::edge_descriptor& e) {
+                    return g.graph()[e].is_virtual ? std::numeric_limits<double>::infinity()
+                                                   : double(g.graph()[e].length);
+                });
+            boost::dijkstra_shortest_paths(g.graph(), PCCD::Proximity_graph::vertex_descriptor(nearest),
+                                           boost::weight_map(weights).distance_map(graph_distance.data()));
+            const double offset = (P.col(nearest) - q.x).norm();
+            const auto geodesic = brute_force_f(
+                P, q.x, sign, h, R, [&](Eigen::Index j) { return offset + graph_distance[std::size_t(j)]; }, normals);
+            const auto gv = object.surface().evaluate(q.x);
+            REQUIRE(geodesic.has_value());
+            if (!gv.defined()) continue; // degenerate fits are covered elsewhere
+            // The CPSP map stores distances as floats: agreement to float precision.
+            CHECK(std::abs(gv.value - geodesic->first) <= 1e-4 * s);
+        }
     }
 }
 

@@ -83,6 +83,7 @@ nlohmann::json describe_file(const std::string& path)
     out["bandwidth"] = object.bandwidth();
     out["eta"] = options.bandwidth.eta;
     out["theta_eps"] = object.theta_eps();
+    out["surface_fit"] = PCCD::to_string(object.surface().fit());
     out["timings_ms"]["normals"] = t.normals;
     out["timings_ms"]["hierarchy"] = t.hierarchy;
     const PCCD::Orientation_report& orientation = object.orientation();
@@ -116,6 +117,7 @@ void print_text(const nlohmann::json& info)
                   << "cpsp          " << info["cpsp"].dump() << '\n'
                   << "bandwidth     " << info["bandwidth"] << " (eta " << info["eta"] << ", theta_eps "
                   << info["theta_eps"] << ")\n"
+                  << "surface fit   " << info["surface_fit"].get<std::string>() << '\n'
                   << "normals       " << info["normals"].dump() << '\n'
                   << "noise         " << info["noise"]["sigma"] << " (" << info["noise"]["sigma_in_spacings"]
                   << " mean spacings)\n"

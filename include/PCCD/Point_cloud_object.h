@@ -65,6 +65,10 @@ struct Point_cloud_object_options {
     Sampling_radius_options sampling_radius = {};
     /// The kernel: eta (default 3), theta_eps (default 1e-2), or a bandwidth h given by the user.
     Bandwidth_options bandwidth = {};
+    /// The local shape the surface fits at each point (Surface_fit). Default: the sphere, whose zero
+    /// set follows curvature (measured in doc/benchmarks.md "Accuracy on scans": about half the
+    /// curve error of the plane on clean scans); Surface_fit::plane gives the published surface.
+    Surface_fit surface_fit = Surface_fit::sphere;
     /// The surface's domain: f is defined only within D_i of the nearest cloud point (default: D_i =
     /// the distance to the 6th nearest other point).
     Surface_domain_options domain = {};
@@ -132,7 +136,7 @@ public:
     using Euclidean_surface = WLS_surface<Euclidean_distance<K>, Gaussian_weight>;
 
     /// Version of the file format written by save().
-    static constexpr std::uint32_t file_version = 2;
+    static constexpr std::uint32_t file_version = 3;
 
     /// \name Construction
     /// @{
@@ -314,10 +318,11 @@ private:
                           std::shared_ptr<const Close_pairs_shortest_paths> cpsp, double sampling_radius,
                           const Gaussian_weight& weight, Eigen::Matrix3Xd normals, Eigen::VectorXd domain,
                           Orientation_report orientation, bool normals_given, Scan_estimate scan,
-                          Preprocessing_times timings, const Point_cloud_hierarchy_options& hierarchy_options)
+                          Preprocessing_times timings, const Point_cloud_hierarchy_options& hierarchy_options,
+                          Surface_fit fit)
     {
-        Geodesic_surface geodesic(Geodesic_distance<K>(cloud, cpsp), weight, normals, domain);
-        Euclidean_surface euclidean(Euclidean_distance<K>(cloud), weight, std::move(normals), std::move(domain));
+        Geodesic_surface geodesic(Geodesic_distance<K>(cloud, cpsp), weight, normals, domain, fit);
+        Euclidean_surface euclidean(Euclidean_distance<K>(cloud), weight, std::move(normals), std::move(domain), fit);
         const auto start = Clock::now();
         Point_cloud_hierarchy hierarchy(cloud.coordinates(), hierarchy_options);
         timings.hierarchy = ms_since(start);
@@ -431,7 +436,7 @@ private:
         return std::make_shared<const Data>(make_data(std::move(cloud), std::move(graph), std::move(cpsp), r, weight,
                                                       std::move(estimate.normals), std::move(domain), orientation,
                                                       given_normals.has_value(), std::move(scan), timings,
-                                                      options.hierarchy));
+                                                      options.hierarchy, options.surface_fit));
     }
 
     std::shared_ptr<const Data> m_data;
@@ -509,15 +514,17 @@ inline std::string read_binary_file(const std::string& path)
 
 } // namespace internal
 
-// File format (version 2, native byte order checked by a mark, no padding):
+// File format (version 3, native byte order checked by a mark, no padding):
 //   magic "PCCDOBJ\0" | u32 version | u32 byte-order mark | u64 N | f64 sampling radius
 //   f64 bandwidth h | f64 theta_eps | u8 normals given | u64 flipped, components, unoriented
 //   f64 timings[5] | f64 points[3N] | f64 normals[3N]
 //   | f64 noise | u64 input points | u64 M | u32 outliers[M] | u64 D (0 or N) | f64 domain radii[D]
+//   | u8 surface fit (Surface_fit)
 //   | u64 G | G bytes: a geodesic file
 //   | u64 checksum (FNV-1a over 64-bit words of everything before it)
 // Version 1 files (without the scan section) still load: no outliers, noise 0, and the domain of
-// the default Surface_domain_options.
+// the default Surface_domain_options; versions 1 and 2 (without the fit) get the plane fit they
+// were made with.
 template <PointCloudKernel K>
 void Point_cloud_object<K>::save(const std::string& path) const
 {
@@ -549,6 +556,7 @@ void Point_cloud_object<K>::save(const std::string& path) const
     out.write(d.scan.outliers.data(), sizeof(std::uint32_t) * d.scan.outliers.size());
     out.put(std::uint64_t(domain_radii().size()));
     out.write(domain_radii().data(), sizeof(double) * std::size_t(domain_radii().size()));
+    out.put(std::uint8_t(surface().fit()));
     out.put(std::uint64_t(geodesic.size()));
     out.write(geodesic.data(), geodesic.size());
     internal::Word_checksum checksum;
@@ -572,8 +580,8 @@ Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path,
     in.read(magic, sizeof magic);
     if (std::memcmp(magic, internal::object_magic, sizeof magic) != 0) in.fail("not a PCCD object file");
     const auto version = in.get<std::uint32_t>();
-    if (version != file_version && version != 1)
-        in.fail(internal::concat("object file format version ", version, ", this PCCD reads versions 1 and ",
+    if (version == 0 || version > file_version)
+        in.fail(internal::concat("object file format version ", version, ", this PCCD reads versions 1 to ",
                                  file_version));
     if (in.get<std::uint32_t>() != internal::byte_order_mark) in.fail("written on a machine of another byte order");
     if (bytes.size() < sizeof(std::uint64_t)) in.fail("truncated file");
@@ -624,6 +632,12 @@ Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path,
         domain.emplace(Eigen::Index(radii));
         in.read(domain->data(), sizeof(double) * std::size_t(radii));
     }
+    Surface_fit fit = Surface_fit::plane;
+    if (version >= 3) {
+        const auto stored = in.get<std::uint8_t>();
+        if (stored > std::uint8_t(Surface_fit::sphere)) in.fail(internal::concat("unknown surface fit ", int(stored)));
+        fit = Surface_fit(stored);
+    }
     const auto geodesic_size = in.get<std::uint64_t>();
     if (in.remaining() < sizeof(std::uint64_t) || in.remaining() - sizeof(std::uint64_t) != geodesic_size)
         in.fail("inconsistent size of the geodesic section");
@@ -645,7 +659,7 @@ Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path,
         if (!domain) domain = surface_domain_radii(cloud);
         return Point_cloud_object(std::make_shared<const Data>(
             make_data(std::move(cloud), std::move(graph), std::move(cpsp), r, weight, std::move(normals),
-                      std::move(*domain), orientation, given, std::move(scan), timings, hierarchy)));
+                      std::move(*domain), orientation, given, std::move(scan), timings, hierarchy, fit)));
     } catch (const File_error&) {
         throw;
     } catch (const Invalid_input& e) {

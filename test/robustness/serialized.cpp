@@ -81,22 +81,22 @@ const std::string& object_bytes()
 /// Field offsets of an object file (format version 1, see Point_cloud_object.h), found from its end
 /// so that they do not depend on the number of timing fields.
 struct Object_layout {
-    std::size_t n, sampling_radius = 24, bandwidth = 32, theta_eps = 40, points, normals, geodesic_size, geodesic;
+    std::size_t n, sampling_radius = 24, bandwidth = 32, theta_eps = 40, points, normals, fit, geodesic_size, geodesic;
 };
 
 Object_layout object_layout(const std::string& bytes, std::size_t n)
 {
-    // Version 2 (Point_cloud_object.h): a 113-byte header, points 24N, normals 24N, then the scan
-    // section (f64 noise, u64 input points, u64 M, u32 outliers[M], u64 D, f64 radii[D]), u64 G,
-    // G bytes, u64 checksum.
+    // Version 3 (Point_cloud_object.h): a 113-byte header, points 24N, normals 24N, then the scan
+    // section (f64 noise, u64 input points, u64 M, u32 outliers[M], u64 D, f64 radii[D]), u8 fit,
+    // u64 G, G bytes, u64 checksum.
     REQUIRE(get<std::uint64_t>(bytes, 16) == n);
     const std::size_t points = 113, normals = points + 24 * n, scan = normals + 24 * n;
     const auto m = get<std::uint64_t>(bytes, scan + 16);
     const std::size_t radii_count = scan + 24 + 4 * std::size_t(m);
     const auto d = get<std::uint64_t>(bytes, radii_count);
-    const std::size_t geodesic_size = radii_count + 8 + 8 * std::size_t(d);
+    const std::size_t geodesic_size = radii_count + 8 + 8 * std::size_t(d) + 1;
     REQUIRE(geodesic_size + 8 + get<std::uint64_t>(bytes, geodesic_size) + 8 == bytes.size());
-    return {n, 24, 32, 40, points, normals, geodesic_size, geodesic_size + 8};
+    return {n, 24, 32, 40, points, normals, geodesic_size - 1, geodesic_size, geodesic_size + 8};
 }
 
 void require_load_error(const std::string& name, const std::string& bytes, const std::vector<std::string>& keywords)
@@ -129,11 +129,11 @@ TEST_CASE("serialized objects: empty, foreign, other version and byte order", "[
     PCCD::write_geodesic_data(geodesic_path, small_object().graph(), small_object().cpsp());
     require_load_error("geodesic_as_object.pccdobj", read_bytes(geodesic_path), {"not a PCCD object file"});
     require_geodesic_error("object_as_geodesic.pccdgeo", good, {"not a PCCD geodesic file"});
-    for (const std::uint32_t version : {0u, 3u, 0xffffffffu}) {
+    for (const std::uint32_t version : {0u, 4u, 0xffffffffu}) {
         std::string other = good;
         put(other, 8, version);
         require_load_error("version.pccdobj", other,
-                           {"object file format version " + std::to_string(version), "reads versions 1 and 2"});
+                           {"object file format version " + std::to_string(version), "reads versions 1 to 3"});
         reseal(other);
         require_load_error("version.pccdobj", other, {"object file format version " + std::to_string(version)});
     }
@@ -172,8 +172,13 @@ TEST_CASE("serialized objects: single bytes corrupted at many offsets", "[robust
             bad[at] = char(bad[at] ^ mask);
             write_bytes(path, bad);
             // The magic, version and byte-order mark are read first; everything else is caught by
-            // the checksum.
-            const char* keyword = at < 8 ? "not a PCCD object file" : at < 12 ? "format version" : at < 16 ? "byte order" : "checksum mismatch";
+            // the checksum, as is a version changed into another readable one (3 xor 1 = 2).
+            const std::uint32_t version = get<std::uint32_t>(bad, 8);
+            const bool readable = version >= 1 && version <= Object::file_version;
+            const char* keyword = at < 8 ? "not a PCCD object file"
+                                  : at < 12 && !readable ? "format version"
+                                  : at >= 12 && at < 16  ? "byte order"
+                                                         : "checksum mismatch";
             require_file_error(path, [&] { (void)Object::load(path); }, {keyword});
         }
 }
@@ -197,6 +202,7 @@ TEST_CASE("serialized objects: inconsistent content behind a valid checksum", "[
     // A count off by one moves every later field: the scan section no longer fits.
     for (const std::uint64_t count : {n - 1, n + 1})
         crafted("count_off_by_one", [&](std::string& b) { put(b, 16, count); }, {"inconsistent"});
+    crafted("fit", [&](std::string& b) { b[at.fit] = char(7); }, {"unknown surface fit 7"});
     for (const double r : {0.0, -1.0, nan, inf})
         crafted("radius", [&](std::string& b) { put(b, at.sampling_radius, r); }, {"invalid sampling radius"});
     for (const double h : {0.0, -1.0, nan, inf, 1e300})

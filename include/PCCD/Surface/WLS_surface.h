@@ -18,6 +18,7 @@
 
 #include <PCCD/Error.h>
 #include <PCCD/Surface/Gaussian_weight.h>
+#include <PCCD/Surface/Surface_fit.h>
 #include <PCCD/Surface/internal/wls_fit.h>
 #include <PCCD/concepts/SurfaceDistance.h>
 #include <PCCD/concepts/SurfaceWeight.h>
@@ -62,9 +63,11 @@ struct Surface_evaluation {
     static constexpr std::uint32_t no_point = std::numeric_limits<std::uint32_t>::max();
 
     Surface_status status = Surface_status::outside_support;
-    /// f(x) = n(x) . (x - a(x)); NaN unless defined.
+    /// f(x): n(x) . (x - a(x)) for the plane fit, the signed distance from x to the fitted sphere
+    /// for the sphere fit (Surface_fit); NaN unless defined.
     double value = std::numeric_limits<double>::quiet_NaN();
-    /// n(x), unit length, oriented like the stored normal of `nearest`; NaN unless defined.
+    /// n(x), unit length, oriented like the stored normal of `nearest` (the sphere fit: the sphere's
+    /// gradient direction at x); NaN unless defined.
     Eigen::Vector3d normal = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
     /// a(x), the weighted mean; NaN when outside_support.
     Eigen::Vector3d centroid = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
@@ -87,7 +90,9 @@ struct Surface_evaluation {
 ///   a(x) = sum theta(d(x, p_i)) p_i / sum theta(d(x, p_i)),
 ///   B(x) = sum theta(d(x, p_i)) (p_i - a(x)) (p_i - a(x))^T,  n(x) = eigenvector of B's smallest
 ///   eigenvalue, with the sign of the normal stored at x's nearest cloud point.
-/// Only the points with d(x, p_i) <= weight.support_radius() take part.
+/// Only the points with d(x, p_i) <= weight.support_radius() take part. With Surface_fit::sphere,
+/// f(x) is instead the signed distance from x to the algebraic sphere fitted to the same weighted
+/// points and their stored normals (doc/manual/surface.md, "The fit: plane or sphere").
 ///
 /// \tparam Distance a model of SurfaceDistance: Euclidean_distance or Geodesic_distance.
 /// \tparam Weight a model of SurfaceWeight (Gaussian_weight by default).
@@ -116,13 +121,19 @@ public:
     ///         `domain_radii` is neither empty nor of size N or holds a radius that is NaN or <= 0, or
     ///         if the weight's support radius exceeds `distance.max_radius()` by more than a relative
     ///         1e-12 (e.g. a CPSP map built for a smaller bound than the kernel needs).
-    WLS_surface(Distance distance, Weight weight, Eigen::Matrix3Xd normals, Eigen::VectorXd domain_radii = {})
+    /// \param fit the local shape fitted at each x (default: the published plane). The sphere fit
+    ///        reads the stored normals of the neighbours, so they must be consistently oriented.
+    WLS_surface(Distance distance, Weight weight, Eigen::Matrix3Xd normals, Eigen::VectorXd domain_radii = {},
+                Surface_fit fit = Surface_fit::plane)
         : m_distance(std::move(distance)),
           m_weight(std::move(weight)),
           m_support(double(m_weight.support_radius())),
           m_normals(std::make_shared<const Eigen::Matrix3Xd>(std::move(normals))),
-          m_domain(std::make_shared<const Eigen::VectorXd>(std::move(domain_radii)))
+          m_domain(std::make_shared<const Eigen::VectorXd>(std::move(domain_radii))),
+          m_fit(fit)
     {
+        if (fit != Surface_fit::plane && fit != Surface_fit::sphere)
+            throw Invalid_input(internal::concat("WLS surface: unknown surface fit ", int(fit)));
         if (m_domain->size() != 0 && std::size_t(m_domain->size()) != m_distance.size())
             throw Invalid_input(internal::concat("WLS surface: ", m_domain->size(), " domain radii given for ",
                                                  m_distance.size(), " points"));
@@ -156,7 +167,7 @@ public:
     /// points in the support and O(1) for the 3 x 3 eigenproblem.
     Surface_evaluation evaluate(const Eigen::Vector3d& x) const
     {
-        internal::Wls_sums sums;
+        Sums sums;
         const std::optional<Index> nearest =
             m_distance.for_each_neighbor(x, m_support, [&](Index j, double d) { add(sums, x, j, d); });
         return finish(x, nearest, sums);
@@ -168,9 +179,9 @@ public:
     {
         PCCD_precondition_msg(i < size(), "WLS surface: point index out of range");
         const Eigen::Vector3d x = m_distance.position(i);
-        internal::Wls_sums sums;
+        Sums sums;
         m_distance.for_each_neighbor_of_point(i, m_support, [&](Index j, double d) { add(sums, x, j, d); });
-        return finish(x, sums.count > 0 ? std::optional<Index>(i) : std::nullopt, sums);
+        return finish(x, sums.plane.count > 0 ? std::optional<Index>(i) : std::nullopt, sums);
     }
 
     /// f(x), or std::nullopt where it is undefined.
@@ -204,6 +215,8 @@ public:
     double support_radius() const { return m_support; }
     /// The stored (oriented) normals, 3 x N.
     const Eigen::Matrix3Xd& normals() const { return *m_normals; }
+    /// The local shape fitted at each evaluation point.
+    Surface_fit fit() const { return m_fit; }
     /// The domain radii D_i (empty when the surface has no domain restriction).
     const Eigen::VectorXd& domain_radii() const { return *m_domain; }
     /// |x - p*| / D_{p*} for x whose nearest cloud point is `nearest` (0 without a domain): x lies
@@ -216,14 +229,26 @@ public:
     /// @}
 
 private:
-    void add(internal::Wls_sums& sums, const Eigen::Vector3d& x, Index j, double d) const
+    struct Sums {
+        internal::Wls_sums plane;
+        internal::Sphere_sums sphere;
+    };
+
+    void add(Sums& sums, const Eigen::Vector3d& x, Index j, double d) const
     {
-        sums.add(m_distance.position(j) - x, double(m_weight(d)));
+        const Eigen::Vector3d offset = m_distance.position(j) - x;
+        const double w = double(m_weight(d));
+        sums.plane.add(offset, w);
+        if (m_fit == Surface_fit::sphere) {
+            const auto normal = m_normals->col(Eigen::Index(j));
+            // A point without a normal (zero column) takes part in the plane only.
+            if (!normal.isZero(0.0)) sums.sphere.add(offset, w, normal);
+        }
     }
 
-    Surface_evaluation finish(const Eigen::Vector3d& x, std::optional<Index> nearest,
-                              const internal::Wls_sums& sums) const
+    Surface_evaluation finish(const Eigen::Vector3d& x, std::optional<Index> nearest, const Sums& all) const
     {
+        const internal::Wls_sums& sums = all.plane;
         Surface_evaluation result;
         if (!nearest || sums.count == 0 || !(sums.weight > 0.0)) return result;
         result.nearest = *nearest;
@@ -244,6 +269,11 @@ private:
         result.status = Surface_status::defined;
         result.normal = fit.normal.dot(reference) < 0.0 ? Eigen::Vector3d(-fit.normal) : fit.normal;
         result.value = result.normal.dot(x - fit.centroid);
+        if (m_fit == Surface_fit::sphere)
+            if (const auto sphere = internal::fit_sphere(all.sphere, reference)) {
+                result.value = sphere->value;
+                result.normal = sphere->normal;
+            }
         return result;
     }
 
@@ -262,6 +292,7 @@ private:
     double m_support;
     std::shared_ptr<const Eigen::Matrix3Xd> m_normals;
     std::shared_ptr<const Eigen::VectorXd> m_domain;
+    Surface_fit m_fit;
 };
 
 } // namespace PCCD

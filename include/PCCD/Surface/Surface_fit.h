@@ -1,0 +1,96 @@
+// PCCD/Surface/Surface_fit.h -- which local shape the implicit surface fits to the weighted
+// neighbours of x (doc/manual/surface.md, "The fit: plane or sphere"): the published plane, or an
+// algebraic sphere fitted to the points and their oriented normals, which follows curvature and so
+// removes the plane's shrinkage on curved parts; the sphere's closed-form solution is here.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <optional>
+
+#include <Eigen/Core>
+
+namespace PCCD {
+
+/// The local shape WLS_surface fits at each evaluation point x.
+enum class Surface_fit : std::uint8_t {
+    /// The published surface: the plane through the weighted mean a(x) normal to the smallest
+    /// eigenvector n(x) of the weighted covariance; f(x) = n(x) . (x - a(x)). On a curved surface
+    /// a(x) lies on the concave side, so the zero set is shrunk by about kappa h^2 / 2.
+    plane = 0,
+    /// An algebraic sphere (a plane in the limit of zero curvature) fitted to the weighted points
+    /// and their oriented normals; f(x) = the signed distance from x to that sphere, n(x) = its
+    /// gradient direction at x. Exact on spheres and planes; where the sphere is not determined
+    /// (no spread of the normals' positions, or the fitted normals disagree with the nearest
+    /// point's), the plane answers.
+    sphere = 1,
+};
+
+/// "plane" or "sphere".
+inline const char* to_string(Surface_fit fit)
+{
+    switch (fit) {
+    case Surface_fit::plane: return "plane";
+    case Surface_fit::sphere: return "sphere";
+    }
+    return "unknown";
+}
+
+namespace internal {
+
+/// Sums of the sphere fit over the weighted neighbours that carry a normal, relative to the query
+/// point x (offsets y_i = p_i - x): W = sum w_i, s = sum w_i y_i, q = sum w_i |y_i|^2,
+/// m = sum w_i n_i, t = sum w_i y_i . n_i.
+struct Sphere_sums {
+    double weight = 0.0;
+    Eigen::Vector3d first = Eigen::Vector3d::Zero();
+    double squared = 0.0;
+    Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+    double offset_dot_normal = 0.0;
+
+    void add(const Eigen::Vector3d& offset, double w, const Eigen::Vector3d& n)
+    {
+        weight += w;
+        first += w * offset;
+        squared += w * offset.squaredNorm();
+        normal += w * n;
+        offset_dot_normal += w * offset.dot(n);
+    }
+};
+
+/// Value and unit gradient of the fitted sphere at x.
+struct Sphere_value {
+    double value;
+    Eigen::Vector3d normal;
+};
+
+/// The algebraic sphere s(y) = u0 + u . y + u4 |y|^2 (y = offset from x) fitted in two weighted
+/// least-squares stages: u and u4 make the gradient match the normals (minimize
+/// sum w_i |u + 2 u4 y_i - n_i|^2), then u0 puts the points on the zero set (minimizes
+/// sum w_i s(y_i)^2). In closed form
+///   u4 = (t/W - (s/W) . (m/W)) / (2 (q/W - |s/W|^2)),  u = m/W - 2 u4 s/W,  u0 = -u . s/W - u4 q/W.
+/// Its signed distance at x (y = 0) is u0 / (|u|/2 + sqrt(|u|^2/4 - u0 u4)), which tends to the
+/// plane's u0 / |u| as u4 -> 0 and has no cancellation. nullopt when the positions do not spread
+/// (q/W - |s/W|^2 <= 0), when the sphere is imaginary, or when u points against `reference` (the
+/// neighbours' normals disagree with the orientation at x).
+inline std::optional<Sphere_value> fit_sphere(const Sphere_sums& sums, const Eigen::Vector3d& reference)
+{
+    if (!(sums.weight > 0.0)) return std::nullopt;
+    const double inv = 1.0 / sums.weight;
+    const Eigen::Vector3d mean = sums.first * inv;
+    const Eigen::Vector3d mean_normal = sums.normal * inv;
+    const double spread = sums.squared * inv - mean.squaredNorm();
+    if (!(spread > 0.0)) return std::nullopt;
+    const double u4 = 0.5 * (sums.offset_dot_normal * inv - mean.dot(mean_normal)) / spread;
+    const Eigen::Vector3d u = mean_normal - 2.0 * u4 * mean;
+    const double u0 = -u.dot(mean) - u4 * sums.squared * inv;
+    const double length = u.norm();
+    const double discriminant = 0.25 * length * length - u0 * u4;
+    if (!(length > 0.0) || !(discriminant >= 0.0) || !(u.dot(reference) > 0.0)) return std::nullopt;
+    const Sphere_value result{u0 / (0.5 * length + std::sqrt(discriminant)), u / length};
+    if (!std::isfinite(result.value) || !result.normal.allFinite()) return std::nullopt;
+    return result;
+}
+
+} // namespace internal
+} // namespace PCCD
