@@ -44,9 +44,9 @@ static_assert(PCCD::CollisionObject<PCCD::Point_cloud_object<PCCD::Eigen_kernel<
 static_assert(PCCD::CollisionObject<PCCD::Point_cloud_object<Epick>>);
 static_assert(PCCD::CollisionObject<PCCD::Point_cloud_object<Sc_double>>);
 static_assert(!PCCD::CollisionObject<PCCD::Point_cloud<>>);
-static_assert(PCCD::LeafIntersector<PCCD::Interpolation_search>);
-static_assert(PCCD::LeafIntersector<PCCD::Randomized_sampling>);
-static_assert(!PCCD::LeafIntersector<PCCD::Intersection_options>);
+static_assert(PCCD::LeafIntersector<PCCD::Interpolation_search, PCCD::Point_cloud_object<>, PCCD::Point_cloud_object<>>);
+static_assert(PCCD::LeafIntersector<PCCD::Randomized_sampling, PCCD::Point_cloud_object<>, PCCD::Point_cloud_object<Epick>>);
+static_assert(!PCCD::LeafIntersector<PCCD::Intersection_options, PCCD::Point_cloud_object<>, PCCD::Point_cloud_object<>>);
 static_assert(!PCCD::PointCloudKernel<Epeck>, "exact number types are not floating point");
 static_assert(!PCCD::PointCloudKernel<int>);
 static_assert(!PCCD::PointCloudKernel<std::vector<double>>);

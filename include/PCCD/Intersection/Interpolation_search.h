@@ -10,17 +10,21 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include <PCCD/Error.h>
+#include <PCCD/Geodesic/Close_pairs_shortest_paths.h>
+#include <PCCD/Geodesic/shortest_path_on_the_fly.h>
 #include <PCCD/Intersection/Intersection_options.h>
 #include <PCCD/Intersection/Intersection_result.h>
 #include <PCCD/Intersection/internal/Query_state.h>
 #include <PCCD/Intersection/internal/overlap_region.h>
 #include <PCCD/Random.h>
+#include <PCCD/concepts/PathSource.h>
 
 namespace PCCD {
 
@@ -35,6 +39,18 @@ enum class Partner_choice : std::uint8_t {
     predicted = 0,
     /// Random candidates from the annulus, as in WSCG05.
     random = 1,
+};
+
+/// Where the interpolation search reads the shortest path of a bracket from: one of the two models
+/// of PathSource.
+enum class Path_choice : std::uint8_t {
+    /// The paths stored in the sampled object's CPSP map (Stored_paths): O(list + path length) per
+    /// bracket.
+    stored = 0,
+    /// Computed per bracket by an A* search over the sampled object's proximity graph, bounded at
+    /// its CPSP bound (Paths_on_the_fly, WSCG05 Algorithm 2 in PCCD's form): paths of the same length,
+    /// nothing read from the map's path storage; slower (a search of the points within the bound).
+    on_the_fly = 1,
 };
 
 /// Leaf intersector policy: stochastic root bracketing and interpolation search (WSCG05 section 4).
@@ -82,6 +98,8 @@ struct Interpolation_search {
     /// b: partner candidates evaluated per bracketing sample (>= 1).
     std::size_t partner_candidates = 4;
     Partner_choice partner_choice = Partner_choice::predicted;
+    /// Where the path of a bracket comes from (default: the stored CPSP paths).
+    Path_choice paths = Path_choice::stored;
     /// Slack of the reachability test |f_T(p_i)| <= slack rho (>= 1; f is about a distance, so 1
     /// would be exact for a true distance function).
     double lipschitz_slack = 1.5;
@@ -109,6 +127,8 @@ struct Interpolation_search {
             throw Invalid_input(internal::concat("interpolation search: lipschitz_slack ", lipschitz_slack, " must be finite and >= 1"));
         if (partner_choice != Partner_choice::predicted && partner_choice != Partner_choice::random)
             throw Invalid_input("interpolation search: unknown partner_choice");
+        if (paths != Path_choice::stored && paths != Path_choice::on_the_fly)
+            throw Invalid_input("interpolation search: unknown paths choice");
     }
 
     /// The automatic epsilon: 0.05 times the smaller sampling radius.
@@ -154,8 +174,30 @@ struct Interpolation_search {
     void run_role(const internal::Posed_object<S>& sampled, const internal::Posed_object<T>& tested,
                   Overlap_region region, double epsilon, internal::Query_state& state) const
     {
+        const Close_pairs_shortest_paths& cpsp = sampled.object->cpsp();
+        if (paths == Path_choice::stored) {
+            run_role_with(sampled, tested, region, epsilon, state, Stored_paths(cpsp));
+        } else {
+            // The map's distances are floats: a bound a little above it keeps its farthest targets.
+            const Proximity_graph& graph = sampled.object->graph();
+            const auto& coordinates = sampled.object->cloud().coordinates();
+            using FT = typename std::remove_cvref_t<decltype(coordinates)>::Scalar;
+            const Paths_on_the_fly<Proximity_graph::Graph, Proximity_graph::Length_map, Proximity_graph::Virtual_map, FT>
+                source(graph.graph(), graph.length_map(), coordinates, {.bound = double(cpsp.bound()) * (1.0 + 1e-6)},
+                       graph.virtual_map());
+            run_role_with(sampled, tested, region, epsilon, state, source);
+        }
+    }
+
+private:
+    /// run_role() with the paths of brackets read from `path_source`.
+    template <class S, class T, PathSource Paths>
+    void run_role_with(const internal::Posed_object<S>& sampled, const internal::Posed_object<T>& tested,
+                       Overlap_region region, double epsilon, internal::Query_state& state,
+                       const Paths& path_source) const
+    {
         const Rigid_transform_3<double> s_to_t = tested.from_world * sampled.to_world;
-        const auto& cpsp = sampled.object->cpsp();
+        const Close_pairs_shortest_paths& cpsp = sampled.object->cpsp();
         const double rho = annulus_outer * cpsp.bound();
         const double inner = rho * (1.0 - annulus_width);
         const auto position = [&sampled](std::uint32_t i) { return sampled.position(i); };
@@ -213,7 +255,7 @@ struct Interpolation_search {
                 }
                 if ((di < 0.0) == (ej.value < 0.0)) continue;
                 ++state.counters.brackets_found;
-                cpsp.path(i, entry, path);
+                if (!path_source.path(i, j, path)) break; // no path within the bound (on the fly)
                 if (auto aip = search_path(sampled, tested, s_to_t, path, di, ej.value, epsilon, state))
                     state.offer(*aip);
                 break;
@@ -221,7 +263,6 @@ struct Interpolation_search {
         }
     }
 
-private:
     static Intersection_point aip(const Eigen::Vector3d& world)
     {
         constexpr double nan = std::numeric_limits<double>::quiet_NaN();

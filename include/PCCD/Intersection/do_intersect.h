@@ -76,7 +76,8 @@ Intersection_result run_query(const A& a, const Rigid_transform_3<double>& pose_
 /// sample for Randomized_sampling), with the query's counters.
 ///
 /// \tparam A, B models of CollisionObject (Point_cloud_object<K>).
-/// \tparam Policy a model of LeafIntersector: Interpolation_search (default) or Randomized_sampling.
+/// \tparam Policy a model of LeafIntersector for A and B: Interpolation_search (default) or
+///         Randomized_sampling.
 /// \param pose_a, pose_b rigid motions from each object's local frame to the world
 ///        (Rigid_transform_3 rejects non-rigid matrices when it is built).
 /// \throws Invalid_input for invalid options or policy parameters (message names the field).
@@ -84,7 +85,8 @@ Intersection_result run_query(const A& a, const Rigid_transform_3<double>& pose_
 /// objects. The answer, points and counters depend only on the arguments (seed included).
 /// Complexity: see Interpolation_search / Randomized_sampling; O(1) allocations per query besides
 /// the candidate lists.
-template <CollisionObject A, CollisionObject B, LeafIntersector Policy = Interpolation_search>
+template <CollisionObject A, CollisionObject B, class Policy = Interpolation_search>
+    requires LeafIntersector<Policy, A, B>
 Intersection_result do_intersect(const A& a, const Rigid_transform_3<double>& pose_a, const B& b,
                                  const Rigid_transform_3<double>& pose_b, const Intersection_options& options = {},
                                  const Policy& policy = Policy())
@@ -97,7 +99,8 @@ Intersection_result do_intersect(const A& a, const Rigid_transform_3<double>& po
 /// the policy asks for is searched (no early stop). Same parameters, guarantees and exceptions as
 /// do_intersect(); in particular any number may run concurrently on the same objects, and the
 /// result (points bit for bit, counters) depends only on the arguments.
-template <CollisionObject A, CollisionObject B, LeafIntersector Policy = Interpolation_search>
+template <CollisionObject A, CollisionObject B, class Policy = Interpolation_search>
+    requires LeafIntersector<Policy, A, B>
 Intersection_result intersection_points(const A& a, const Rigid_transform_3<double>& pose_a, const B& b,
                                         const Rigid_transform_3<double>& pose_b,
                                         const Intersection_options& options = {}, const Policy& policy = Policy())

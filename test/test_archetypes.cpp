@@ -1,0 +1,338 @@
+// Archetypes, in the manner of the Boost Concept Check Library: minimal types that model exactly what
+// a concept states, with which the public algorithms are instantiated (so an algorithm that uses
+// more than its concept says does not compile here), and near-miss types, each lacking one
+// requirement, that the concept rejects. The archetypes wrap real models, so the algorithms also run
+// on them and must give the same answers as on the models.
+//
+// Concepts covered: CollisionObject and LeafIntersector (do_intersect, intersection_points, both
+// policies, both path choices), PathSource, SurfaceDistance and SurfaceWeight (WLS_surface,
+// estimate_normals).
+#include "surface_test_helpers.h"
+
+#include <PCCD/Intersection/do_intersect.h>
+#include <PCCD/Point_cloud_object.h>
+#include <PCCD/Surface/WLS_surface.h>
+#include <PCCD/Surface/estimate_normals.h>
+#include <PCCD/concepts/CollisionObject.h>
+#include <PCCD/concepts/PathSource.h>
+#include <PCCD/concepts/SurfaceDistance.h>
+#include <PCCD/concepts/SurfaceWeight.h>
+
+#include <catch2/catch.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+using namespace pccd_test;
+
+namespace archetype {
+
+using Object = PCCD::Point_cloud_object<>;
+
+/// The cloud as CollisionObject sees it: position(i) and coordinates(), nothing else.
+class Cloud {
+public:
+    explicit Cloud(const Object& o) : m_object(&o) {}
+    Eigen::Vector3d position(std::uint32_t i) const { return m_object->cloud().position(i); }
+    const Eigen::Matrix3Xd& coordinates() const { return m_object->cloud().coordinates(); }
+
+private:
+    const Object* m_object;
+};
+
+/// The surface as CollisionObject sees it: evaluate(x) and support_radius().
+class Surface {
+public:
+    explicit Surface(const Object& o) : m_object(&o) {}
+    PCCD::Surface_evaluation evaluate(const Eigen::Vector3d& x) const { return m_object->surface().evaluate(x); }
+    double support_radius() const { return m_object->surface().support_radius(); }
+
+private:
+    const Object* m_object;
+};
+
+/// Exactly the members CollisionObject requires.
+class Collision_object {
+public:
+    explicit Collision_object(const Object& o) : m_object(&o), m_cloud(o), m_surface(o) {}
+    std::size_t size() const { return m_object->size(); }
+    const Cloud& cloud() const { return m_cloud; }
+    const Surface& surface() const { return m_surface; }
+    const PCCD::Proximity_graph& graph() const { return m_object->graph(); }
+    const PCCD::Close_pairs_shortest_paths& cpsp() const { return m_object->cpsp(); }
+    const PCCD::Point_cloud_hierarchy& hierarchy() const { return m_object->hierarchy(); }
+    double sampling_radius() const { return m_object->sampling_radius(); }
+    double noise_estimate() const { return m_object->noise_estimate(); }
+
+private:
+    const Object* m_object;
+    Cloud m_cloud;
+    Surface m_surface;
+};
+
+// Near-misses: each lacks one requirement of CollisionObject.
+struct Without_noise_estimate {
+    std::size_t size() const;
+    const Cloud& cloud() const;
+    const Surface& surface() const;
+    const PCCD::Proximity_graph& graph() const;
+    const PCCD::Close_pairs_shortest_paths& cpsp() const;
+    const PCCD::Point_cloud_hierarchy& hierarchy() const;
+    double sampling_radius() const;
+};
+struct Without_graph {
+    std::size_t size() const;
+    const Cloud& cloud() const;
+    const Surface& surface() const;
+    const PCCD::Close_pairs_shortest_paths& cpsp() const;
+    const PCCD::Point_cloud_hierarchy& hierarchy() const;
+    double sampling_radius() const;
+    double noise_estimate() const;
+};
+struct With_foreign_paths { // cpsp() is not a CPSP map
+    std::size_t size() const;
+    const Cloud& cloud() const;
+    const Surface& surface() const;
+    const PCCD::Proximity_graph& graph() const;
+    const std::vector<std::vector<std::uint32_t>>& cpsp() const;
+    const PCCD::Point_cloud_hierarchy& hierarchy() const;
+    double sampling_radius() const;
+    double noise_estimate() const;
+};
+struct Value_surface { // evaluate() returns f only, not a Surface_evaluation
+    double evaluate(const Eigen::Vector3d&) const;
+    double support_radius() const;
+};
+struct With_value_surface {
+    std::size_t size() const;
+    const Cloud& cloud() const;
+    const Value_surface& surface() const;
+    const PCCD::Proximity_graph& graph() const;
+    const PCCD::Close_pairs_shortest_paths& cpsp() const;
+    const PCCD::Point_cloud_hierarchy& hierarchy() const;
+    double sampling_radius() const;
+    double noise_estimate() const;
+};
+struct Temporary_cloud { // coordinates() by value: a path search would keep a dangling reference
+    Eigen::Vector3d position(std::uint32_t) const;
+    Eigen::Matrix3Xd coordinates() const;
+};
+struct With_temporary_coordinates {
+    std::size_t size() const;
+    const Temporary_cloud& cloud() const;
+    const Surface& surface() const;
+    const PCCD::Proximity_graph& graph() const;
+    const PCCD::Close_pairs_shortest_paths& cpsp() const;
+    const PCCD::Point_cloud_hierarchy& hierarchy() const;
+    double sampling_radius() const;
+    double noise_estimate() const;
+};
+struct Without_hierarchy {
+    std::size_t size() const;
+    const Cloud& cloud() const;
+    const Surface& surface() const;
+    const PCCD::Proximity_graph& graph() const;
+    const PCCD::Close_pairs_shortest_paths& cpsp() const;
+    double sampling_radius() const;
+    double noise_estimate() const;
+};
+
+/// Exactly what LeafIntersector requires; run() offers the sampled objects' first points that
+/// lie within epsilon of the other surface (a real, if weak, intersector).
+struct Leaf_intersector {
+    static const char* name() { return "archetype"; }
+    void check() const {}
+    double default_epsilon(double r) const { return 0.05 * r; }
+    template <class A, class B>
+    void run(const PCCD::internal::Posed_object<A>& a, const PCCD::internal::Posed_object<B>& b,
+             const PCCD::Intersection_options&, double epsilon, PCCD::internal::Query_state& state, double& closest) const
+    {
+        closest = std::numeric_limits<double>::quiet_NaN();
+        for (std::uint32_t i = 0; i < a.size() && !state.stop(); ++i) {
+            const Eigen::Vector3d x = a.to_world.transform_point(a.position(i));
+            const PCCD::Surface_evaluation e = state.evaluate_world(b, x);
+            if (e.defined() && std::abs(e.value) <= epsilon)
+                state.offer(PCCD::Intersection_point{x, 0.0, e.value, PCCD::Intersection_point_kind::approximate});
+        }
+    }
+};
+struct Without_run {
+    static const char* name() { return "no run"; }
+    void check() const {}
+    double default_epsilon(double r) const { return r; }
+};
+struct With_numeric_name {
+    static int name() { return 1; }
+    void check() const {}
+    double default_epsilon(double r) const { return r; }
+    template <class A, class B>
+    void run(const PCCD::internal::Posed_object<A>&, const PCCD::internal::Posed_object<B>&,
+             const PCCD::Intersection_options&, double, PCCD::internal::Query_state&, double&) const;
+};
+
+/// Exactly what PathSource requires.
+struct Path_source {
+    bool path(std::uint32_t from, std::uint32_t to, std::vector<std::uint32_t>& out) const
+    {
+        out = {from, to};
+        return true;
+    }
+};
+struct Silent_path_source { // does not say whether a path exists
+    void path(std::uint32_t, std::uint32_t, std::vector<std::uint32_t>&) const;
+};
+struct Path_length_source { // gives a length, not a path
+    bool path(std::uint32_t, std::uint32_t) const;
+};
+
+/// Exactly what SurfaceDistance requires, over a Euclidean_distance.
+class Distance {
+public:
+    explicit Distance(const PCCD::Euclidean_distance<>& d) : m_d(d) {}
+    std::size_t size() const { return m_d.size(); }
+    Eigen::Vector3d position(std::uint32_t i) const { return m_d.position(i); }
+    double max_radius() const { return m_d.max_radius(); }
+    template <class Visitor>
+    void for_each_neighbor_of_point(std::uint32_t i, double radius, Visitor&& visitor) const
+    {
+        m_d.for_each_neighbor_of_point(i, radius, visitor);
+    }
+    template <class Visitor>
+    std::optional<std::uint32_t> for_each_neighbor(const Eigen::Vector3d& x, double radius, Visitor&& visitor) const
+    {
+        return m_d.for_each_neighbor(x, radius, visitor);
+    }
+
+private:
+    PCCD::Euclidean_distance<> m_d;
+};
+struct Distance_without_point_queries {
+    std::size_t size() const;
+    Eigen::Vector3d position(std::uint32_t) const;
+    double max_radius() const;
+    template <class Visitor>
+    std::optional<std::uint32_t> for_each_neighbor(const Eigen::Vector3d&, double, Visitor&&) const;
+};
+struct Distance_without_nearest { // for_each_neighbor does not report the nearest point
+    std::size_t size() const;
+    Eigen::Vector3d position(std::uint32_t) const;
+    double max_radius() const;
+    template <class Visitor>
+    void for_each_neighbor_of_point(std::uint32_t, double, Visitor&&) const;
+    template <class Visitor>
+    void for_each_neighbor(const Eigen::Vector3d&, double, Visitor&&) const;
+};
+
+/// Exactly what SurfaceWeight requires, over a Gaussian_weight.
+class Weight {
+public:
+    explicit Weight(const PCCD::Gaussian_weight& w) : m_w(w) {}
+    double operator()(double d) const { return double(m_w(d)); }
+    double support_radius() const { return double(m_w.support_radius()); }
+
+private:
+    PCCD::Gaussian_weight m_w;
+};
+struct Weight_without_support {
+    double operator()(double) const;
+};
+
+} // namespace archetype
+
+static_assert(PCCD::CollisionObject<archetype::Collision_object>);
+static_assert(!PCCD::CollisionObject<archetype::Without_noise_estimate>);
+static_assert(!PCCD::CollisionObject<archetype::Without_graph>);
+static_assert(!PCCD::CollisionObject<archetype::With_foreign_paths>);
+static_assert(!PCCD::CollisionObject<archetype::With_value_surface>);
+static_assert(!PCCD::CollisionObject<archetype::With_temporary_coordinates>);
+static_assert(!PCCD::CollisionObject<archetype::Without_hierarchy>);
+
+using Arch = archetype::Collision_object;
+static_assert(PCCD::LeafIntersector<archetype::Leaf_intersector, Arch, Arch>);
+static_assert(PCCD::LeafIntersector<PCCD::Interpolation_search, Arch, Arch>);
+static_assert(PCCD::LeafIntersector<PCCD::Randomized_sampling, Arch, Arch>);
+static_assert(!PCCD::LeafIntersector<archetype::Without_run, Arch, Arch>);
+static_assert(!PCCD::LeafIntersector<archetype::With_numeric_name, Arch, Arch>);
+
+static_assert(PCCD::PathSource<archetype::Path_source>);
+static_assert(PCCD::PathSource<PCCD::Stored_paths>);
+static_assert(!PCCD::PathSource<archetype::Silent_path_source>);
+static_assert(!PCCD::PathSource<archetype::Path_length_source>);
+
+static_assert(PCCD::SurfaceDistance<archetype::Distance>);
+static_assert(!PCCD::SurfaceDistance<archetype::Distance_without_point_queries>);
+static_assert(!PCCD::SurfaceDistance<archetype::Distance_without_nearest>);
+static_assert(PCCD::SurfaceWeight<archetype::Weight>);
+static_assert(!PCCD::SurfaceWeight<archetype::Weight_without_support>);
+
+TEST_CASE("the intersection queries run on collision-object archetypes as on the model", "[concepts]")
+{
+    const auto sample = sample_shape(unit_sphere(), 3000, 0.0, 91);
+    const archetype::Object object(columns(sample.points));
+    const Arch arch(object);
+    const PCCD::Rigid_transform_3<double> apart(Eigen::Matrix3d::Identity(), Eigen::Vector3d(2.5, 0.0, 0.0));
+    const PCCD::Rigid_transform_3<double> overlapping(Eigen::Matrix3d::Identity(), Eigen::Vector3d(1.0, 0.0, 0.0));
+    const PCCD::Rigid_transform_3<double> identity;
+    const PCCD::Interpolation_search on_the_fly{.paths = PCCD::Path_choice::on_the_fly};
+    for (const bool expected : {false, true}) {
+        const PCCD::Rigid_transform_3<double>& pose = expected ? overlapping : apart;
+        const auto model = PCCD::do_intersect(object, identity, object, pose);
+        const auto with_archetype = PCCD::do_intersect(arch, identity, arch, pose);
+        CHECK(model.intersects == expected);
+        CHECK(with_archetype.intersects == model.intersects);
+        CHECK(with_archetype.counters.f_evaluations == model.counters.f_evaluations);
+        CHECK(PCCD::do_intersect(arch, identity, object, pose, {}, PCCD::Randomized_sampling{}).intersects == expected);
+        CHECK(PCCD::do_intersect(arch, identity, arch, pose, {}, on_the_fly).intersects == expected);
+        CHECK(PCCD::do_intersect(arch, identity, arch, pose, {}, archetype::Leaf_intersector{}).intersects == expected);
+        const auto curve = PCCD::intersection_points(arch, identity, arch, pose);
+        CHECK(curve.points.size() == PCCD::intersection_points(object, identity, object, pose).points.size());
+    }
+}
+
+TEST_CASE("stored and on-the-fly paths give the interpolation search the same curves", "[concepts]")
+{
+    // Paths on the fly are shortest paths of the same length as the stored ones (ties aside), so
+    // the curves of two overlapping unit spheres (the circle x = 0.5, radius sqrt(3) / 2) agree.
+    const auto sample = sample_shape(unit_sphere(), 4000, 0.0, 92);
+    const archetype::Object object(columns(sample.points));
+    const PCCD::Rigid_transform_3<double> pose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(1.0, 0.0, 0.0));
+    const PCCD::Rigid_transform_3<double> identity;
+    for (const auto paths : {PCCD::Path_choice::stored, PCCD::Path_choice::on_the_fly}) {
+        const auto curve = PCCD::intersection_points(object, identity, object, pose, {},
+                                                     PCCD::Interpolation_search{.paths = paths});
+        INFO("paths " << int(paths));
+        REQUIRE(curve.points.size() > 30); // about 5.4 / the point spacing (r)
+        for (const auto& p : curve.points) {
+            CHECK(std::abs(p.position.x() - 0.5) < 0.02);
+            CHECK(std::abs(Eigen::Vector2d(p.position.y(), p.position.z()).norm() - std::sqrt(0.75)) < 0.02);
+        }
+    }
+    CHECK_THROWS_AS(PCCD::do_intersect(object, identity, object, pose, {},
+                                       PCCD::Interpolation_search{.paths = PCCD::Path_choice(9)}),
+                    PCCD::Invalid_input);
+}
+
+TEST_CASE("the implicit surface runs on distance and weight archetypes as on the models", "[concepts]")
+{
+    const auto sample = sample_shape(test_torus(), 2000, 0.1, 93);
+    const PCCD::Point_cloud<> cloud(sample.points);
+    const PCCD::Euclidean_distance<> distance(cloud);
+    const PCCD::Gaussian_weight weight(0.08, 0.01);
+    const archetype::Distance arch_distance(distance);
+    const archetype::Weight arch_weight(weight);
+    const auto normals = PCCD::estimate_normals(distance, weight);
+    const auto arch_normals = PCCD::estimate_normals(arch_distance, arch_weight);
+    CHECK(arch_normals.normals == normals.normals);
+    for (const PCCD::Surface_fit fit : {PCCD::Surface_fit::plane, PCCD::Surface_fit::sphere}) {
+        const PCCD::WLS_surface<PCCD::Euclidean_distance<>> model(distance, weight, sample.normals, {}, fit);
+        const PCCD::WLS_surface<archetype::Distance, archetype::Weight> arch(arch_distance, arch_weight,
+                                                                             sample.normals, {}, fit);
+        for (const Query& q : queries_near(test_torus(), 50, 0.05, 94)) {
+            const auto a = arch.evaluate(q.x), m = model.evaluate(q.x);
+            CHECK(a.status == m.status);
+            if (m.defined()) CHECK(a.value == m.value);
+        }
+        CHECK(arch.evaluate_at(7).value == model.evaluate_at(7).value);
+    }
+}
