@@ -94,10 +94,13 @@ TEST_CASE("f approximates the exact signed distance within 2 spacings of the sur
 {
     for_each_test_shape([](const Test_shape& info, const auto& shape) {
         for (std::size_t n : {4000u, 16000u})
-            for (double noise : {0.0, 0.2}) {
+            for (double noise : {0.0, 0.2})
+              for (const PCCD::Surface_fit fit : {PCCD::Surface_fit::plane, PCCD::Surface_fit::sphere}) {
                 const auto sample = sample_shape(shape, n, noise, 7);
                 const double sigma = noise * 0.5 * std::sqrt(shape.area() / double(n));
-                const Object object(columns(sample.points), identity, no_domain);
+                PCCD::Point_cloud_object_options options = no_domain;
+                options.surface_fit = fit;
+                const Object object(columns(sample.points), identity, options);
                 const double s = object.cloud().mean_spacing();
                 const double R = object.weight().support_radius();
                 const double tol0 = 0.05 + 0.25 * R * R / info.curvature_radius / s; // in units of s
@@ -106,7 +109,7 @@ TEST_CASE("f approximates the exact signed distance within 2 spacings of the sur
                 if (info.closed) CHECK(sign == 1.0);
                 const Errors euclidean = errors(object.euclidean_surface(), queries, s, sign);
                 const Errors geodesic = errors(object.surface(), queries, s, sign);
-                INFO(info.name << " N = " << n << " noise sigma = " << sigma / s << " s, R = " << R / s
+                INFO(info.name << " " << PCCD::to_string(fit) << " fit, N = " << n << " noise sigma = " << sigma / s << " s, R = " << R / s
                                << " s, tol0 = " << tol0 << " s; Euclidean max " << euclidean.max() << ", geodesic max "
                                << geodesic.max() << " p99 " << geodesic.quantile(0.99) << ", undefined "
                                << euclidean.undefined << " / " << geodesic.undefined);
