@@ -5,6 +5,8 @@
 // casts of run_kinetic_scene give the same hits with every method.
 #include <PCCD/Kinetic/Kinetic_AABB_tree.h>
 #include <PCCD/Kinetic/Refit_AABB_tree.h>
+#include <PCCD/Kinetic/boxes_overlap.h>
+#include <PCCD/Kinetic/intersect_ray_triangle.h>
 #include <PCCD/Random.h>
 
 #include <scenes/Cloth_scene.h>

@@ -31,6 +31,7 @@
 #include <PCCD/Error.h>
 #include <PCCD/Kinetic/Event_queue.h>
 #include <PCCD/Kinetic/Kinetic_primitives.h>
+#include <PCCD/Kinetic/Kinetic_ray.h>
 #include <PCCD/Kinetic/internal/AABB_tree_build.h>
 #include <PCCD/Kinetic/internal/AABB_tree_queries.h>
 #include <PCCD/Kinetic/internal/Primitive_slots.h>

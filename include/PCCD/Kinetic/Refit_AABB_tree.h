@@ -1,8 +1,8 @@
-// PCCD/Kinetic/Refit_AABB_tree.h -- the baselines of the kinetic AABB tree (ALGORITHMS.md section
-// 7, "bottom-up"): an AABB tree over the same moving primitives that, at every advance_to(t),
-// evaluates all vertex positions and either refits every node's box bottom-up over a fixed topology
-// or rebuilds the whole tree. Same node access and queries as Kinetic_AABB_tree, so the three
-// update strategies are interchangeable in benchmarks and applications.
+// PCCD/Kinetic/Refit_AABB_tree.h -- the baselines of the kinetic AABB tree (doc/manual/kinetic.md,
+// "Baselines with the same interface"): an AABB tree over the same moving primitives that, at every
+// advance_to(t), evaluates all vertex positions and either refits every node's box bottom-up over a
+// fixed topology or rebuilds the whole tree. Same node access and queries as Kinetic_AABB_tree, so
+// the three update strategies are interchangeable in benchmarks and applications.
 #pragma once
 
 #include <cmath>
@@ -18,6 +18,7 @@
 
 #include <PCCD/Error.h>
 #include <PCCD/Kinetic/Kinetic_primitives.h>
+#include <PCCD/Kinetic/Kinetic_ray.h>
 #include <PCCD/Kinetic/internal/AABB_tree_build.h>
 #include <PCCD/Kinetic/internal/AABB_tree_queries.h>
 #include <PCCD/Kinetic/internal/Primitive_slots.h>
