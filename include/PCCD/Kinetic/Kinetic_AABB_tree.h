@@ -33,6 +33,7 @@
 #include <PCCD/Kinetic/Kinetic_primitives.h>
 #include <PCCD/Kinetic/Kinetic_ray.h>
 #include <PCCD/Kinetic/internal/AABB_tree_build.h>
+#include <PCCD/Kinetic/internal/AABB_tree_checks.h>
 #include <PCCD/Kinetic/internal/AABB_tree_queries.h>
 #include <PCCD/Kinetic/internal/Primitive_slots.h>
 #include <PCCD/Kinetic/internal/Query_memo_pool.h>
@@ -103,24 +104,20 @@ public:
     ///         (the message names both), or there are 2^31 primitives or more.
     /// Complexity: O(n log n) plus one next_crossing per candidate of every node and bound.
     Kinetic_AABB_tree(std::vector<F> flightplans, std::vector<P> primitives, double t0 = 0.0)
-        : m_flightplans(std::move(flightplans)), m_primitives(std::move(primitives), "Kinetic_AABB_tree"), m_now(t0)
+        : m_flightplans(std::move(flightplans)), m_primitives(std::move(primitives), tree_name), m_now(t0)
     {
-        if (!std::isfinite(t0)) throw Invalid_input(internal::concat("Kinetic_AABB_tree: start time ", t0, " is not finite"));
+        internal::check_start_time(tree_name, t0);
         if (m_flightplans.size() >= std::size_t(no_node))
             throw Invalid_input("Kinetic_AABB_tree: too many vertices (2^32 - 1 or more)");
         m_incident.resize(m_flightplans.size());
         for (Index i = 0; i < Index(m_primitives.capacity()); ++i) {
-            check_primitive(m_primitives[i], i);
+            internal::check_primitive(tree_name, m_primitives[i], i, m_flightplans.size());
             add_incidence(i);
         }
         m_leaf_of.assign(m_primitives.capacity(), no_node);
-        std::vector<Index> ids(m_primitives.capacity());
-        std::vector<Eigen::Vector3d> centroids(m_primitives.capacity());
-        for (Index i = 0; i < Index(ids.size()); ++i) {
-            ids[i] = i;
-            centroids[i] = centroid(m_primitives[i], t0);
-        }
-        m_root = internal::build_median_split(std::move(ids), centroids, m_nodes);
+        std::vector<Eigen::Vector3d> centroids;
+        m_root = internal::build_over_live_primitives(
+            m_primitives, [&](Index v) { return m_flightplans[v].position(t0); }, centroids, m_nodes);
         m_extreme.assign(m_nodes.size(), unset_extremes());
         for (Node_index n = 0; n < Node_index(m_nodes.size()); ++n)
             if (m_nodes[n].is_leaf()) m_leaf_of[m_nodes[n].primitive] = n;
@@ -146,7 +143,7 @@ public:
     /// how often it is called (the number of events depends on the motion only).
     void advance_to(double t)
     {
-        if (!std::isfinite(t)) throw Invalid_input(internal::concat("Kinetic_AABB_tree::advance_to: time ", t, " is not finite"));
+        internal::check_advance_time(tree_name, t);
         if (t < m_now) {
             initialize_at(t);
             return;
@@ -183,9 +180,7 @@ public:
     /// Complexity: O(d log n) certificate computations, d the number of primitives using v.
     void set_flightplan(Index v, F flightplan)
     {
-        if (v >= m_flightplans.size())
-            throw Invalid_input(internal::concat("Kinetic_AABB_tree::set_flightplan: vertex ", v, " out of range (",
-                                                 m_flightplans.size(), " vertices)"));
+        internal::check_vertex(tree_name, v, m_flightplans.size());
         m_flightplans[v] = std::move(flightplan);
         ++m_stats.flightplan_changes;
         next_update_round();
@@ -222,8 +217,8 @@ public:
     /// can unbalance the tree; rebuild it when the height matters.
     Index insert(const P& primitive)
     {
-        check_primitive(primitive, Index(m_primitives.capacity()));
-        const Index i = m_primitives.insert(primitive, "Kinetic_AABB_tree");
+        internal::check_primitive(tree_name, primitive, Index(m_primitives.capacity()), m_flightplans.size());
+        const Index i = m_primitives.insert(primitive, tree_name);
         if (i >= m_leaf_of.size()) m_leaf_of.resize(m_primitives.capacity(), no_node);
         add_incidence(i);
         ++m_stats.insertions;
@@ -258,8 +253,7 @@ public:
     /// Complexity: O(h) certificate computations.
     void remove(Index i)
     {
-        if (!contains(i))
-            throw Invalid_input(internal::concat("Kinetic_AABB_tree::remove: primitive ", i, " is not in the tree"));
+        internal::check_live_primitive(tree_name, i, contains(i));
         ++m_stats.removals;
         next_update_round();
         remove_incidence(i);
@@ -362,14 +356,14 @@ public:
     template <class Tree>
     void overlapping_pairs(const Tree& other, std::vector<std::pair<Index, Index>>& out, double margin = 0.0) const
     {
-        check_query(other.now(), margin);
+        internal::check_query(m_now, other.now(), margin);
         internal::overlapping_pairs(Query_view(*this), query_view_of(other), margin, out);
     }
     /// Pairs i < j of non-adjacent primitives (sharing no vertex) whose boxes, grown by `margin`,
     /// overlap. \throws Invalid_input if margin < 0.
     void self_overlapping_pairs(std::vector<std::pair<Index, Index>>& out, double margin = 0.0) const
     {
-        check_query(m_now, margin);
+        internal::check_query(m_now, m_now, margin);
         internal::self_overlapping_pairs(Query_view(*this), margin, out);
     }
     /// Primitives whose boxes overlap the closed box `query`.
@@ -397,7 +391,7 @@ public:
     template <class Tree, class Descend, class OnLeafPair>
     void traverse(const Tree& other, Descend&& descend, OnLeafPair&& on_leaf_pair) const
     {
-        check_query(other.now(), 0.0);
+        internal::check_query(m_now, other.now(), 0.0);
         internal::traverse_pairs(Query_view(*this), m_root, query_view_of(other), other.root(), descend, on_leaf_pair);
     }
     /// @}
@@ -405,6 +399,9 @@ public:
 private:
     template <Flightplan, KineticPrimitive, class>
     friend class Kinetic_AABB_tree;
+
+    /// The tree's name in the messages of its exceptions.
+    static constexpr const char* tree_name = "Kinetic_AABB_tree";
 
     /// The tree as one query reads it: the same nodes and primitives, with vertex positions and
     /// node boxes at now() computed on first use and memoized for the rest of the query. The memo
@@ -487,31 +484,6 @@ private:
         return e;
     }
     static typename Queue::Id certificate_id(Node_index n, int b) { return n * bound_count + Index(b); }
-
-    void check_primitive(const P& p, Index i) const
-    {
-        for (std::size_t k = 0; k < P::vertex_count; ++k)
-            if (std::uint32_t(p.vertex(k)) >= m_flightplans.size())
-                throw Invalid_input(internal::concat("Kinetic_AABB_tree: primitive ", i, " refers to vertex ",
-                                                     std::uint32_t(p.vertex(k)), " but there are ",
-                                                     m_flightplans.size(), " vertices"));
-    }
-
-    void check_query(double other_now, double margin) const
-    {
-        if (other_now != m_now)
-            throw Invalid_input(internal::concat("kinetic query: the trees are at different times (", m_now, " and ",
-                                                 other_now, "); advance both first"));
-        if (!std::isgreaterequal(margin, 0.0))
-            throw Invalid_input(internal::concat("kinetic query: margin ", margin, " is negative"));
-    }
-
-    Eigen::Vector3d centroid(const P& p, double t) const
-    {
-        Eigen::Vector3d c = Eigen::Vector3d::Zero();
-        for (std::size_t k = 0; k < P::vertex_count; ++k) c += m_flightplans[p.vertex(k)].position(t);
-        return c / double(P::vertex_count);
-    }
 
     void add_incidence(Index i)
     {
