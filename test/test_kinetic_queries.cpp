@@ -1,8 +1,8 @@
 // Queries on kinetic and refit trees (doc/manual/kinetic.md, "Queries" and "Baselines with the same
 // interface"): box overlap of two trees, self-overlap without adjacent primitives, first ray hit on
 // triangles and box range queries at random times equal brute force over all primitives, for the
-// kinetic tree and both baselines; the traversal hook visits the same leaf pairs; point clouds with a proximity margin; the ray
-// casts of run_kinetic_scene give the same hits with every method.
+// kinetic tree and both baselines; the traversal hook visits the same leaf pairs; point clouds with
+// a proximity margin; the ray casts of run_kinetic_scene give the same hits with every method.
 #include <PCCD/Kinetic/Kinetic_AABB_tree.h>
 #include <PCCD/Kinetic/Refit_AABB_tree.h>
 #include <PCCD/Kinetic/boxes_overlap.h>

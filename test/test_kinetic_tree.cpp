@@ -1,9 +1,9 @@
-// Kinetic AABB tree (doc/manual/kinetic.md, "Building and advancing" and "Changing the animation
-// at run time"): at 1,000 random times per scene every node's box equals the brute-force box of its
+// Kinetic AABB tree (doc/manual/kinetic.md, "Building and advancing" and "Changing the animation at
+// run time"): at 1,000 random times per scene every node's box equals the brute-force box of its
 // primitives' vertices (exact comparison of the extreme vertices' coordinates, ties allowed); the
-// same after flightplan changes and after insertions and removals; the number of events over an animation with linear flightplans stays
-// within the stated bound; ties and simultaneous events are deterministic; the event queue agrees
-// with an ordered set.
+// same after flightplan changes and after insertions and removals; the number of events over an
+// animation with linear flightplans stays within the stated bound; ties and simultaneous events are
+// deterministic; the event queue agrees with an ordered set.
 #include <PCCD/Kinetic/Event_queue.h>
 #include <PCCD/Kinetic/Kinetic_AABB_tree.h>
 #include <PCCD/Kinetic/Linear_flightplan.h>

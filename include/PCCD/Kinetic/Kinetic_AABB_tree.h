@@ -184,7 +184,8 @@ public:
     /// can unbalance the tree; rebuild it when the height matters.
     Index insert(const P& primitive)
     {
-        internal::check_primitive(tree_name, primitive, Index(m_state.primitives.capacity()), m_state.flightplans.size());
+        const State& s = m_state;
+        internal::check_primitive(tree_name, primitive, Index(s.primitives.capacity()), s.flightplans.size());
         return internal::insert_primitive(m_state, primitive, tree_name);
     }
 
@@ -285,7 +286,8 @@ public:
     void traverse(const Tree& other, Descend&& descend, OnLeafPair&& on_leaf_pair) const
     {
         internal::check_query(m_state.now, other.now(), 0.0);
-        internal::traverse_pairs(Query_view(m_state), m_state.root, query_view_of(other), other.root(), descend, on_leaf_pair);
+        internal::traverse_pairs(Query_view(m_state), m_state.root, query_view_of(other), other.root(), descend,
+                                 on_leaf_pair);
     }
     /// @}
 

@@ -38,7 +38,8 @@ void check_primitive(const char* tree, const P& p, std::uint32_t i, std::size_t 
 inline void check_vertex(const char* tree, std::uint32_t v, std::size_t vertex_count)
 {
     if (v >= vertex_count)
-        throw Invalid_input(concat(tree, "::set_flightplan: vertex ", v, " out of range (", vertex_count, " vertices)"));
+        throw Invalid_input(
+            concat(tree, "::set_flightplan: vertex ", v, " out of range (", vertex_count, " vertices)"));
 }
 
 /// The primitive `i` passed to `tree`::remove is live (`live` = the tree's contains(i)).
@@ -54,7 +55,8 @@ inline void check_query(double now, double other_now, double margin)
     if (other_now != now)
         throw Invalid_input(concat("kinetic query: the trees are at different times (", now, " and ", other_now,
                                    "); advance both first"));
-    if (!std::isgreaterequal(margin, 0.0)) throw Invalid_input(concat("kinetic query: margin ", margin, " is negative"));
+    if (!std::isgreaterequal(margin, 0.0))
+        throw Invalid_input(concat("kinetic query: margin ", margin, " is negative"));
 }
 
 } // namespace PCCD::internal

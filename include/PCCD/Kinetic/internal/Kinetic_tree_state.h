@@ -1,9 +1,10 @@
-// PCCD/Kinetic/internal/Kinetic_tree_state.h -- the data of a Kinetic_AABB_tree (doc/manual/
-// kinetic.md, "Building and advancing"): flightplans, primitive slots, nodes, the extreme vertex of
-// every inner node and bound, the event queue of their certificates, the query memo pool and the
-// counters. The machinery that keeps it valid works on this struct: Kinetic_certificates.h (one
-// certificate), Kinetic_event_loop.h (events in time order), Kinetic_tree_edits.h (changes at run
-// time), Kinetic_node_access.h (boxes at now) and Kinetic_query_view.h (queries).
+// PCCD/Kinetic/internal/Kinetic_tree_state.h -- the data of a Kinetic_AABB_tree
+// (doc/manual/kinetic.md, "Building and advancing"): flightplans, primitive slots, nodes, the
+// extreme vertex of every inner node and bound, the event queue of their certificates, the query
+// memo pool and the counters. The machinery that keeps it valid works on this struct:
+// Kinetic_certificates.h (one certificate), Kinetic_event_loop.h (events in time order),
+// Kinetic_tree_edits.h (changes at run time), Kinetic_node_access.h (boxes at now) and
+// Kinetic_query_view.h (queries).
 #pragma once
 
 #include <array>
