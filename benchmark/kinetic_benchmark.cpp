@@ -18,8 +18,8 @@
 // visits nearly the whole tree, the kinetic tree's worst case (it assembles node boxes lazily at
 // query time); a ray touches only the nodes along its path. For "+rays" rows, queries counts rays
 // (rays per frame x frames); --rays 0 leaves these rows out.
-#include <PCCD/Kinetic/Scenes/Cloth_scene.h>
-#include <PCCD/Kinetic/Scenes/run_kinetic_scene.h>
+#include <scenes/Cloth_scene.h>
+#include <scenes/run_kinetic_scene.h>
 
 #include <algorithm>
 #include <chrono>

@@ -1,7 +1,8 @@
-// Flightplans (issue: kinetic AABB tree, item 1): concepts, and crossing times of linear,
-// piecewise-linear and cubic flightplans against independent truths -- closed forms, exact integer
-// key frames, Eigen's polynomial solver and dense sampling. Crossings at key-frame boundaries must
-// be found exactly once.
+// Flightplans (doc/manual/kinetic.md, "Flightplans"; doc/reference/kinetic-concepts.md): concepts,
+// and crossing times of linear, piecewise-linear and cubic flightplans against independent truths --
+// closed forms, exact integer key frames, motions with crossings at known times, next_crossing's
+// definition evaluated over the negative intervals of the difference, Eigen's polynomial solver
+// and dense sampling. Crossings at key-frame boundaries must be found exactly once.
 #include <PCCD/Kinetic/Kinetic_primitives.h>
 #include <PCCD/Kinetic/Linear_flightplan.h>
 #include <PCCD/Kinetic/Piecewise_linear_flightplan.h>
@@ -18,6 +19,8 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 using PCCD::Linear_flightplan;
@@ -186,43 +189,53 @@ TEST_CASE("piecewise-linear crossings at key frames are found exactly once", "[k
 
 namespace {
 
-/// The key scan of Piecewise_linear_flightplan::next_crossing for shared key times, key by key
-/// without skipping blocks: the reference for the block skipping.
-double plain_key_scan(const std::vector<double>& ts, const std::vector<Eigen::Vector3d>& a,
-                      const std::vector<Eigen::Vector3d>& b, int axis, double t)
+/// next_crossing of two key-framed motions with the same key times `ts`, from its definition
+/// inf{ s > t : d(s) < 0 } for d = a - b, by a route of its own: `d` holds the differences at the
+/// keys (exact for the data below); d is linear between keys and constant outside, so its negative
+/// set is a union of open intervals read off the signs of d at the ends of each key interval (the
+/// whole constant end beyond the first or last key when d is negative there). The answer is the
+/// smallest max(begin, t) over the intervals that end after t, +infinity when none does. Zeros
+/// inside a key interval are computed in long double from the interval's far end, so they agree
+/// with the flightplan's to rounding only.
+long double crossing_by_definition(const std::vector<double>& ts, const std::vector<double>& d, double t)
 {
-    std::size_t k = std::size_t(std::upper_bound(ts.begin(), ts.end(), t) - ts.begin());
-    double d0 = a[k == 0 ? 0 : k - 1][axis] - b[k == 0 ? 0 : k - 1][axis];
-    if (k == 0) {
-        if (d0 < 0.0) return t;
-        k = 1;
+    struct Interval {
+        long double begin, end;
+    };
+    constexpr long double unbounded = std::numeric_limits<long double>::infinity();
+    std::vector<Interval> negative;
+    if (d.front() < 0) negative.push_back({-unbounded, ts.front()});
+    for (std::size_t k = 1; k < ts.size(); ++k) {
+        const long double lo = ts[k - 1], hi = ts[k], d0 = d[k - 1], d1 = d[k];
+        auto zero = [&] { return hi - (hi - lo) * d1 / (d1 - d0); }; // only where the signs differ
+        if (d0 < 0 && d1 < 0)
+            negative.push_back({lo, hi});
+        else if (d0 >= 0 && d1 < 0)
+            negative.push_back({zero(), hi});
+        else if (d0 < 0 && d1 >= 0)
+            negative.push_back({lo, zero()});
     }
-    for (; k < ts.size(); ++k) {
-        const double d1 = a[k][axis] - b[k][axis];
-        if (d0 >= 0.0 && d1 >= 0.0) {
-            d0 = d1;
-            continue;
-        }
-        const double lo = ts[k - 1], hi = ts[k];
-        if (d0 < 0.0 && d1 < 0.0) return std::max(lo, t);
-        const double root = lo + (hi - lo) * (d0 / (d0 - d1));
-        if (d0 >= 0.0) {
-            if (hi > t) return std::max(root, t);
-        } else if (root > t) {
-            return std::max(lo, t);
-        }
-        d0 = d1;
-    }
-    return d0 < 0.0 ? std::max(ts.back(), t) : inf;
+    if (d.back() < 0) negative.push_back({ts.back(), unbounded});
+    long double first = unbounded;
+    for (const Interval& i : negative)
+        if (i.end > t) first = std::min(first, std::max(i.begin, static_cast<long double>(t)));
+    return first;
 }
+
+/// x rounded to a multiple of 2^-10: differences of such values in [-8, 8] are exact doubles.
+double quantized(double x) { return std::round(x * 1024.0) / 1024.0; }
 
 } // namespace
 
-TEST_CASE("piecewise-linear key scan skipping separated blocks equals the plain scan", "[kinetic][flightplan]")
+TEST_CASE("piecewise-linear crossings on shared key times, blocks skipped or not, match the definition",
+          "[kinetic][flightplan]")
 {
     // Long animations alternating stretches where the two flightplans are far apart (whole blocks
-    // skipped) with stretches of near-ties and crossings, at query times on and between keys.
+    // of keys skipped by the key scan) with stretches of near-ties, exact ties (axis 2) and
+    // crossings, at query times on and between keys. Both the key scan (shared key times) and the
+    // general route (the same key times in two vectors) are held to crossing_by_definition.
     PCCD::Random_engine rng(31);
+    int finite = 0;
     for (int trial = 0; trial < 200; ++trial) {
         const std::size_t keys = 20 + PCCD::uniform_index(rng, 300);
         const auto ts = std::make_shared<std::vector<double>>(keys);
@@ -230,21 +243,86 @@ TEST_CASE("piecewise-linear key scan skipping separated blocks equals the plain 
         double gap = 1.0;
         for (std::size_t k = 0; k < keys; ++k) {
             (*ts)[k] = 0.5 * double(k);
-            if (PCCD::uniform_index(rng, 12) == 0) gap = PCCD::uniform_index(rng, 3) == 0 ? 0.0 : 2.0 * PCCD::uniform_real(rng, -1.0, 1.0);
+            if (PCCD::uniform_index(rng, 12) == 0)
+                gap = PCCD::uniform_index(rng, 3) == 0 ? 0.0 : quantized(2.0 * PCCD::uniform_real(rng, -1.0, 1.0));
             for (int axis = 0; axis < 3; ++axis) {
-                pb[k][axis] = PCCD::uniform_real(rng, -0.5, 0.5);
-                pa[k][axis] = pb[k][axis] + gap + (axis == 2 ? 0.0 : PCCD::uniform_real(rng, -0.3, 0.3));
+                pb[k][axis] = quantized(PCCD::uniform_real(rng, -0.5, 0.5));
+                pa[k][axis] = pb[k][axis] + gap + (axis == 2 ? 0.0 : quantized(PCCD::uniform_real(rng, -0.3, 0.3)));
             }
         }
         const Piecewise_linear_flightplan a(ts, pa), b(ts, pb);
+        const Piecewise_linear_flightplan general_a(*ts, pa), general_b(*ts, pb);
+        REQUIRE(a.key_times() == b.key_times());
+        REQUIRE(general_a.key_times() != general_b.key_times());
         for (int q = 0; q < 40; ++q) {
             const double t = q % 4 == 0 ? (*ts)[PCCD::uniform_index(rng, keys)] : PCCD::uniform_real(rng, -1.0, 0.5 * double(keys));
             for (int axis = 0; axis < 3; ++axis) {
-                CHECK(a.next_crossing(b, axis, t) == plain_key_scan(*ts, pa, pb, axis, t));
-                CHECK(b.next_crossing(a, axis, t) == plain_key_scan(*ts, pb, pa, axis, t));
+                std::vector<double> ab(keys), ba(keys);
+                for (std::size_t k = 0; k < keys; ++k) {
+                    ab[k] = pa[k][axis] - pb[k][axis];
+                    ba[k] = pb[k][axis] - pa[k][axis];
+                }
+                const long double a_drops = crossing_by_definition(*ts, ab, t);
+                const long double b_drops = crossing_by_definition(*ts, ba, t);
+                for (const auto& [x, y, truth] : {std::tuple(&a, &b, a_drops), std::tuple(&b, &a, b_drops),
+                                                  std::tuple(&general_a, &general_b, a_drops),
+                                                  std::tuple(&general_b, &general_a, b_drops)}) {
+                    const double got = x->next_crossing(*y, axis, t);
+                    if (truth == std::numeric_limits<long double>::infinity()) {
+                        CHECK(got == inf);
+                    } else {
+                        CHECK(got == Approx(double(truth)).margin(1e-11));
+                        ++finite;
+                    }
+                }
             }
         }
     }
+    CHECK(finite > 10000);
+}
+
+TEST_CASE("piecewise-linear key scan over long separated stretches: a triangle wave crossing at known times",
+          "[kinetic][flightplan]")
+{
+    // a's x falls by 0.25 per key for 20 keys, then rises for 20 (keys every 0.5, from 2.625 down to
+    // -2.375 and back); b rests at 0. a drops below b halfway between keys 10 and 11 of each period,
+    // at t = 5.25 + 20 j, and rises above it at t = 14.75 + 20 j, for j = 0 .. 4 (200 keys, then a
+    // rests above b). On y a stays 10 above b: never a crossing. All these times are exact doubles.
+    const std::size_t keys = 200;
+    const auto ts = std::make_shared<std::vector<double>>(keys);
+    std::vector<Eigen::Vector3d> pa(keys), pb(keys, Eigen::Vector3d::Zero());
+    for (std::size_t k = 0; k < keys; ++k) {
+        (*ts)[k] = 0.5 * double(k);
+        const std::size_t phase = k % 40, descent = phase <= 20 ? phase : 40 - phase;
+        pa[k] = Eigen::Vector3d(2.625 - 0.25 * double(descent), 10.0, 0.0);
+    }
+    // The open intervals where a's x is below b's and where b's is below a's, and the definition of
+    // next_crossing over them: the smallest max(begin, t) of an interval that ends after t.
+    std::vector<std::pair<double, double>> a_below{}, b_below{{-inf, 5.25}};
+    for (int j = 0; j < 5; ++j) {
+        a_below.emplace_back(5.25 + 20 * j, 14.75 + 20 * j);
+        b_below.emplace_back(14.75 + 20 * j, j < 4 ? 25.25 + 20 * j : inf);
+    }
+    auto first_after = [](const std::vector<std::pair<double, double>>& intervals, double t) {
+        double first = inf;
+        for (const auto& [begin, end] : intervals)
+            if (end > t) first = std::min(first, std::max(begin, t));
+        return first;
+    };
+    const Piecewise_linear_flightplan a(ts, pa), b(ts, pb);
+    const Piecewise_linear_flightplan general_a(*ts, pa), general_b(*ts, pb);
+    std::vector<double> queries{-3.0, 0.0, 5.0, 5.25, 5.5, 10.0, 14.75, 14.8, 20.0, 25.25, 60.0, 94.75, 99.5, 120.0};
+    for (int i = 0; i <= 1000; ++i) queries.push_back(-1.0 + 0.125 * i);
+    for (const double t : queries) {
+        CHECK(a.next_crossing(b, 0, t) == first_after(a_below, t));
+        CHECK(b.next_crossing(a, 0, t) == first_after(b_below, t));
+        CHECK(general_a.next_crossing(general_b, 0, t) == first_after(a_below, t));
+        CHECK(general_b.next_crossing(general_a, 0, t) == first_after(b_below, t));
+        CHECK(a.next_crossing(b, 1, t) == inf);
+        CHECK(b.next_crossing(a, 1, t) == t);
+    }
+    CHECK(enumerate_crossings(a, b, 0, -1.0) ==
+          std::vector<double>{5.25, 14.75, 25.25, 34.75, 45.25, 54.75, 65.25, 74.75, 85.25, 94.75});
 }
 
 TEST_CASE("piecewise-linear flightplans with different key times match dense sampling", "[kinetic][flightplan]")

@@ -1,15 +1,18 @@
-// Queries on kinetic and refit trees (issue: kinetic AABB tree, items 3 and 4): box overlap of two
-// trees, self-overlap without adjacent primitives, first ray hit on triangles and box range queries
-// at random times equal brute force over all primitives, for the kinetic tree and both baselines;
-// the traversal hook visits the same leaf pairs; point clouds with a proximity margin; the ray
-// casts of run_kinetic_scene give the same hits with every method.
+// Queries on kinetic and refit trees (doc/manual/kinetic.md, "Queries" and "Baselines with the same
+// interface"): box overlap of two trees, self-overlap without adjacent primitives, first ray hit on
+// triangles and box range queries at random times equal brute force over all primitives, for the
+// kinetic tree and both baselines; the traversal hook visits the same leaf pairs; point clouds with
+// a proximity margin; the ray casts of run_kinetic_scene give the same hits with every method.
 #include <PCCD/Kinetic/Kinetic_AABB_tree.h>
 #include <PCCD/Kinetic/Refit_AABB_tree.h>
-#include <PCCD/Kinetic/Scenes/Cloth_scene.h>
-#include <PCCD/Kinetic/Scenes/Deforming_cloud_scene.h>
-#include <PCCD/Kinetic/Scenes/Random_motion_scene.h>
-#include <PCCD/Kinetic/Scenes/run_kinetic_scene.h>
+#include <PCCD/Kinetic/boxes_overlap.h>
+#include <PCCD/Kinetic/intersect_ray_triangle.h>
 #include <PCCD/Random.h>
+
+#include <scenes/Cloth_scene.h>
+#include <scenes/Deforming_cloud_scene.h>
+#include <scenes/Random_motion_scene.h>
+#include <scenes/run_kinetic_scene.h>
 
 #include <catch2/catch.hpp>
 

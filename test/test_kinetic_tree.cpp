@@ -1,18 +1,19 @@
-// Kinetic AABB tree (issue: kinetic AABB tree, items 2 and 5): at 1,000 random times per scene
-// every node's box equals the brute-force box of its primitives' vertices (exact comparison of the
-// extreme vertices' coordinates, ties allowed); the same after flightplan changes and after
-// insertions and removals; the number of events over an animation with linear flightplans stays
-// within the stated bound; ties and simultaneous events are deterministic; the event queue agrees
-// with an ordered set.
+// Kinetic AABB tree (doc/manual/kinetic.md, "Building and advancing" and "Changing the animation at
+// run time"): at 1,000 random times per scene every node's box equals the brute-force box of its
+// primitives' vertices (exact comparison of the extreme vertices' coordinates, ties allowed); the
+// same after flightplan changes and after insertions and removals; the number of events over an
+// animation with linear flightplans stays within the stated bound; ties and simultaneous events are
+// deterministic; the event queue agrees with an ordered set.
 #include <PCCD/Kinetic/Event_queue.h>
 #include <PCCD/Kinetic/Kinetic_AABB_tree.h>
 #include <PCCD/Kinetic/Linear_flightplan.h>
 #include <PCCD/Kinetic/Polynomial_flightplan.h>
 #include <PCCD/Kinetic/Refit_AABB_tree.h>
-#include <PCCD/Kinetic/Scenes/Cloth_scene.h>
-#include <PCCD/Kinetic/Scenes/Deforming_cloud_scene.h>
-#include <PCCD/Kinetic/Scenes/Random_motion_scene.h>
 #include <PCCD/Random.h>
+
+#include <scenes/Cloth_scene.h>
+#include <scenes/Deforming_cloud_scene.h>
+#include <scenes/Random_motion_scene.h>
 
 #include <catch2/catch.hpp>
 

@@ -1,16 +1,18 @@
 // pccd kinetic-bench: plays a recorded scene (cloth falling on a table, deforming point cloud or
 // random linear motion) with the kinetic AABB tree, bottom-up refit and full rebuild at one query
-// rate, and prints BV updates, events and time per frame of each (ALGORITHMS.md section 7).
+// rate, and prints BV updates, events and time per frame of each (doc/manual/kinetic.md, "When to
+// use which"; the scenes are benchmark/scenes/, target pccd_kinetic_scenes).
 // The queries per frame: the overlap with the scene's obstacle (the table; a range query for the
 // point scenes) unless --no-overlap, plus --rays N first-hit ray casts (cloth only; fixed rays, the
 // same for every method, see PCCD::Kinetic_run_options::rays_per_frame).
 #include "commands.h"
 
 #include <PCCD/Error.h>
-#include <PCCD/Kinetic/Scenes/Cloth_scene.h>
-#include <PCCD/Kinetic/Scenes/Deforming_cloud_scene.h>
-#include <PCCD/Kinetic/Scenes/Random_motion_scene.h>
-#include <PCCD/Kinetic/Scenes/run_kinetic_scene.h>
+
+#include <scenes/Cloth_scene.h>
+#include <scenes/Deforming_cloud_scene.h>
+#include <scenes/Random_motion_scene.h>
+#include <scenes/run_kinetic_scene.h>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>

@@ -1,6 +1,6 @@
-// PCCD/Kinetic/Linear_flightplan.h -- the simplest Flightplan model: constant velocity,
-// p(t) = p0 + v (t - t0) for all t (ALGORITHMS.md section 7). Two linear flightplans cross at most
-// once per axis, which is the setting of the O(n log n) event bound.
+// PCCD/Kinetic/Linear_flightplan.h -- the simplest Flightplan model (doc/manual/kinetic.md,
+// "Flightplans"): constant velocity, p(t) = p0 + v (t - t0) for all t. Two linear flightplans cross
+// at most once per axis, which is the setting of the O(n log n) event bound.
 #pragma once
 
 #include <cmath>
@@ -9,7 +9,9 @@
 #include <Eigen/Core>
 
 #include <PCCD/Error.h>
+#include <PCCD/Kinetic/Cubic.h>
 #include <PCCD/Kinetic/internal/Piecewise_cubic.h>
+#include <PCCD/Kinetic/next_crossing.h>
 #include <PCCD/internal/finite.h>
 
 namespace PCCD {
@@ -42,22 +44,22 @@ public:
     /// inf{ s > t : coordinate(axis, s) < other.coordinate(axis, s) } or +infinity. O(1).
     double next_crossing(const Linear_flightplan& other, int axis, double t) const
     {
-        return internal::next_crossing(*this, other, axis, t);
+        return PCCD::next_crossing(*this, other, axis, t);
     }
 
     const Eigen::Vector3d& start() const { return m_start; }
     const Eigen::Vector3d& velocity() const { return m_velocity; }
     double t0() const { return m_t0; }
 
-    /// \cond PIECES -- the piece interface read by internal::next_crossing: one piece, all times.
+    /// \cond PIECES -- the piece interface read by PCCD::next_crossing: one piece, all times.
     std::size_t piece_count() const { return 1; }
     std::size_t piece_at(double) const { return 0; }
     double piece_begin(std::size_t) const { return -internal::infinity; }
     double piece_end(std::size_t) const { return internal::infinity; }
     double piece_origin(std::size_t) const { return m_t0; }
-    internal::Cubic piece_cubic(std::size_t, int axis) const
+    Cubic piece_cubic(std::size_t, int axis) const
     {
-        return internal::Cubic{{m_start[axis], m_velocity[axis], 0.0, 0.0}};
+        return Cubic{{m_start[axis], m_velocity[axis], 0.0, 0.0}};
     }
     /// \endcond
 

@@ -1,6 +1,7 @@
-// PCCD/Kinetic/Piecewise_linear_flightplan.h -- a Flightplan model through key frames: linear
-// interpolation between consecutive key positions, at rest before the first and after the last key
-// (ALGORITHMS.md section 7). This is what the scenes record from their simulations.
+// PCCD/Kinetic/Piecewise_linear_flightplan.h -- a Flightplan model through key frames
+// (doc/manual/kinetic.md, "Flightplans"): linear interpolation between consecutive key positions,
+// at rest before the first and after the last key. This is what a simulation or a recorded
+// animation produces (the scenes of benchmark/scenes/ record it).
 #pragma once
 
 #include <algorithm>
@@ -13,7 +14,9 @@
 #include <Eigen/Core>
 
 #include <PCCD/Error.h>
+#include <PCCD/Kinetic/Cubic.h>
 #include <PCCD/Kinetic/internal/Piecewise_cubic.h>
+#include <PCCD/Kinetic/next_crossing.h>
 #include <PCCD/internal/finite.h>
 
 namespace PCCD {
@@ -103,7 +106,7 @@ public:
     /// are skipped whole: every difference in them is >= 0, so the result is that of the plain scan.
     double next_crossing(const Piecewise_linear_flightplan& other, int axis, double t) const
     {
-        if (m_times != other.m_times) return internal::next_crossing(*this, other, axis, t);
+        if (m_times != other.m_times) return PCCD::next_crossing(*this, other, axis, t);
         const std::vector<double>& ts = *m_times;
         const std::size_t keys = ts.size();
         std::size_t k = piece_at(t); // t in [t_k-1, t_k)
@@ -169,11 +172,11 @@ public:
     double piece_begin(std::size_t k) const { return k == 0 ? -internal::infinity : (*m_times)[k - 1]; }
     double piece_end(std::size_t k) const { return k < m_times->size() ? (*m_times)[k] : internal::infinity; }
     double piece_origin(std::size_t k) const { return k == 0 ? m_times->front() : (*m_times)[k - 1]; }
-    internal::Cubic piece_cubic(std::size_t k, int axis) const
+    Cubic piece_cubic(std::size_t k, int axis) const
     {
-        if (k == 0) return internal::Cubic{{m_positions.front()[axis], 0.0, 0.0, 0.0}};
-        if (k == m_positions.size()) return internal::Cubic{{m_positions.back()[axis], 0.0, 0.0, 0.0}};
-        return internal::Cubic{{m_positions[k - 1][axis], slope(k, axis), 0.0, 0.0}};
+        if (k == 0) return Cubic{{m_positions.front()[axis], 0.0, 0.0, 0.0}};
+        if (k == m_positions.size()) return Cubic{{m_positions.back()[axis], 0.0, 0.0, 0.0}};
+        return Cubic{{m_positions[k - 1][axis], slope(k, axis), 0.0, 0.0}};
     }
     /// \endcond
 

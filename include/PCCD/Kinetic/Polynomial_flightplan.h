@@ -1,7 +1,7 @@
 // PCCD/Kinetic/Polynomial_flightplan.h -- a Flightplan model made of polynomial pieces of degree
-// <= 3 (ALGORITHMS.md section 7): one cubic for all times, or a C1 cubic Hermite spline through key
-// frames with given velocities (at rest outside the key range). Crossings are isolated robustly by
-// internal/Piecewise_cubic.h: critical points, then bisection on monotone pieces.
+// <= 3 (doc/manual/kinetic.md, "Flightplans"): one cubic for all times, or a C1 cubic Hermite spline
+// through key frames with given velocities (at rest outside the key range). Crossings are isolated
+// robustly by next_crossing (next_crossing.h): critical points, then bisection on monotone pieces.
 #pragma once
 
 #include <algorithm>
@@ -14,7 +14,9 @@
 #include <Eigen/Core>
 
 #include <PCCD/Error.h>
+#include <PCCD/Kinetic/Cubic.h>
 #include <PCCD/Kinetic/internal/Piecewise_cubic.h>
+#include <PCCD/Kinetic/next_crossing.h>
 #include <PCCD/internal/finite.h>
 
 namespace PCCD {
@@ -85,7 +87,7 @@ public:
     /// Piecewise_linear_flightplan), so that one tree can mix kinds of motion.
     template <class F>
         requires requires(const F& g, std::size_t k) {
-            { g.piece_cubic(k, 0) } -> std::same_as<internal::Cubic>;
+            { g.piece_cubic(k, 0) } -> std::same_as<Cubic>;
         }
     static Polynomial_flightplan from_pieces(const F& other)
     {
@@ -94,7 +96,7 @@ public:
         for (std::size_t k = 0; k < other.piece_count(); ++k) {
             Piece piece{other.piece_begin(k), other.piece_origin(k), {}};
             for (int axis = 0; axis < 3; ++axis) {
-                const internal::Cubic c = other.piece_cubic(k, axis);
+                const Cubic c = other.piece_cubic(k, axis);
                 for (std::size_t i = 0; i < 4; ++i) piece.c[i][axis] = c.c[i];
             }
             f.m_pieces.push_back(piece);
@@ -115,7 +117,7 @@ public:
     /// O(log pieces + merged pieces scanned); per piece one quadratic solve and <= 3 bisections.
     double next_crossing(const Polynomial_flightplan& other, int axis, double t) const
     {
-        return internal::next_crossing(*this, other, axis, t);
+        return PCCD::next_crossing(*this, other, axis, t);
     }
 
     /// \cond PIECES
@@ -129,10 +131,10 @@ public:
     double piece_begin(std::size_t k) const { return m_pieces[k].begin; }
     double piece_end(std::size_t k) const { return k + 1 < m_pieces.size() ? m_pieces[k + 1].begin : internal::infinity; }
     double piece_origin(std::size_t k) const { return m_pieces[k].origin; }
-    internal::Cubic piece_cubic(std::size_t k, int axis) const
+    Cubic piece_cubic(std::size_t k, int axis) const
     {
         const Coefficients& c = m_pieces[k].c;
-        return internal::Cubic{{c[0][axis], c[1][axis], c[2][axis], c[3][axis]}};
+        return Cubic{{c[0][axis], c[1][axis], c[2][axis], c[3][axis]}};
     }
     /// \endcond
 

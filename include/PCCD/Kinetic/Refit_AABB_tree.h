@@ -1,8 +1,8 @@
-// PCCD/Kinetic/Refit_AABB_tree.h -- the baselines of the kinetic AABB tree (ALGORITHMS.md section
-// 7, "bottom-up"): an AABB tree over the same moving primitives that, at every advance_to(t),
-// evaluates all vertex positions and either refits every node's box bottom-up over a fixed topology
-// or rebuilds the whole tree. Same node access and queries as Kinetic_AABB_tree, so the three
-// update strategies are interchangeable in benchmarks and applications.
+// PCCD/Kinetic/Refit_AABB_tree.h -- the baselines of the kinetic AABB tree (doc/manual/kinetic.md,
+// "Baselines with the same interface"): an AABB tree over the same moving primitives that, at every
+// advance_to(t), evaluates all vertex positions and either refits every node's box bottom-up over a
+// fixed topology or rebuilds the whole tree. Same node access and queries as Kinetic_AABB_tree, so
+// the three update strategies are interchangeable in benchmarks and applications.
 #pragma once
 
 #include <cmath>
@@ -18,7 +18,9 @@
 
 #include <PCCD/Error.h>
 #include <PCCD/Kinetic/Kinetic_primitives.h>
+#include <PCCD/Kinetic/Kinetic_ray.h>
 #include <PCCD/Kinetic/internal/AABB_tree_build.h>
+#include <PCCD/Kinetic/internal/AABB_tree_checks.h>
 #include <PCCD/Kinetic/internal/AABB_tree_queries.h>
 #include <PCCD/Kinetic/internal/Primitive_slots.h>
 #include <PCCD/concepts/Flightplan.h>
@@ -66,11 +68,12 @@ public:
     ///         there are 2^31 primitives or more.
     /// Complexity: O(n log n).
     Refit_AABB_tree(std::vector<F> flightplans, std::vector<P> primitives, double t0 = 0.0, Refit_options options = {})
-        : m_flightplans(std::move(flightplans)), m_primitives(std::move(primitives), "Refit_AABB_tree"),
+        : m_flightplans(std::move(flightplans)), m_primitives(std::move(primitives), tree_name),
           m_options(options), m_now(t0)
     {
-        if (!std::isfinite(t0)) throw Invalid_input(internal::concat("Refit_AABB_tree: start time ", t0, " is not finite"));
-        for (Index i = 0; i < Index(m_primitives.capacity()); ++i) check_primitive(m_primitives[i], i);
+        internal::check_start_time(tree_name, t0);
+        for (Index i = 0; i < Index(m_primitives.capacity()); ++i)
+            internal::check_primitive(tree_name, m_primitives[i], i, m_flightplans.size());
         evaluate_positions();
         rebuild_topology();
         refit();
@@ -85,7 +88,7 @@ public:
     /// Complexity: O(V) flightplan evaluations + O(n) box merges (bottom_up) or O(n log n) (rebuild).
     void advance_to(double t)
     {
-        if (!std::isfinite(t)) throw Invalid_input(internal::concat("Refit_AABB_tree::advance_to: time ", t, " is not finite"));
+        internal::check_advance_time(tree_name, t);
         m_now = t;
         ++m_stats.frames;
         evaluate_positions();
@@ -100,9 +103,7 @@ public:
     /// \throws Invalid_input if v is out of range. Complexity: O(n).
     void set_flightplan(Index v, F flightplan)
     {
-        if (v >= m_flightplans.size())
-            throw Invalid_input(internal::concat("Refit_AABB_tree::set_flightplan: vertex ", v, " out of range (",
-                                                 m_flightplans.size(), " vertices)"));
+        internal::check_vertex(tree_name, v, m_flightplans.size());
         m_flightplans[v] = std::move(flightplan);
         m_positions[v] = m_flightplans[v].position(m_now);
         refit();
@@ -116,8 +117,8 @@ public:
     /// Inserts a primitive and rebuilds the tree at now(). Complexity: O(n log n).
     Index insert(const P& primitive)
     {
-        check_primitive(primitive, Index(m_primitives.capacity()));
-        const Index i = m_primitives.insert(primitive, "Refit_AABB_tree");
+        internal::check_primitive(tree_name, primitive, Index(m_primitives.capacity()), m_flightplans.size());
+        const Index i = m_primitives.insert(primitive, tree_name);
         rebuild_topology();
         refit();
         return i;
@@ -125,8 +126,7 @@ public:
     /// Removes primitive i and rebuilds the tree at now(). \throws Invalid_input if i is not live.
     void remove(Index i)
     {
-        if (!contains(i))
-            throw Invalid_input(internal::concat("Refit_AABB_tree::remove: primitive ", i, " is not in the tree"));
+        internal::check_live_primitive(tree_name, i, contains(i));
         m_primitives.remove(i);
         rebuild_topology();
         refit();
@@ -161,12 +161,12 @@ public:
     template <class Tree>
     void overlapping_pairs(const Tree& other, std::vector<std::pair<Index, Index>>& out, double margin = 0.0) const
     {
-        check_query(other.now(), margin);
+        internal::check_query(m_now, other.now(), margin);
         internal::overlapping_pairs(*this, other, margin, out);
     }
     void self_overlapping_pairs(std::vector<std::pair<Index, Index>>& out, double margin = 0.0) const
     {
-        check_query(m_now, margin);
+        internal::check_query(m_now, m_now, margin);
         internal::self_overlapping_pairs(*this, margin, out);
     }
     void range_query(const Box& query, std::vector<Index>& out) const { internal::range_query(*this, query, out); }
@@ -184,28 +184,14 @@ public:
     template <class Tree, class Descend, class OnLeafPair>
     void traverse(const Tree& other, Descend&& descend, OnLeafPair&& on_leaf_pair) const
     {
-        check_query(other.now(), 0.0);
+        internal::check_query(m_now, other.now(), 0.0);
         internal::traverse_pairs(*this, m_root, other, other.root(), descend, on_leaf_pair);
     }
     /// @}
 
 private:
-    void check_primitive(const P& p, Index i) const
-    {
-        for (std::size_t k = 0; k < P::vertex_count; ++k)
-            if (std::uint32_t(p.vertex(k)) >= m_flightplans.size())
-                throw Invalid_input(internal::concat("Refit_AABB_tree: primitive ", i, " refers to vertex ",
-                                                     std::uint32_t(p.vertex(k)), " but there are ",
-                                                     m_flightplans.size(), " vertices"));
-    }
-    void check_query(double other_now, double margin) const
-    {
-        if (other_now != m_now)
-            throw Invalid_input(internal::concat("kinetic query: the trees are at different times (", m_now, " and ",
-                                                 other_now, "); advance both first"));
-        if (!std::isgreaterequal(margin, 0.0))
-            throw Invalid_input(internal::concat("kinetic query: margin ", margin, " is negative"));
-    }
+    /// The tree's name in the messages of its exceptions.
+    static constexpr const char* tree_name = "Refit_AABB_tree";
 
     void evaluate_positions()
     {
@@ -215,18 +201,9 @@ private:
 
     void rebuild_topology()
     {
-        std::vector<Index> ids;
-        ids.reserve(m_primitives.live_count());
-        m_centroids.resize(m_primitives.capacity());
-        for (Index i = 0; i < Index(m_primitives.capacity()); ++i) {
-            if (!m_primitives.contains(i)) continue;
-            ids.push_back(i);
-            Eigen::Vector3d c = Eigen::Vector3d::Zero();
-            for (std::size_t k = 0; k < P::vertex_count; ++k) c += m_positions[m_primitives[i].vertex(k)];
-            m_centroids[i] = c / double(P::vertex_count);
-        }
         m_nodes.clear();
-        m_root = internal::build_median_split(std::move(ids), m_centroids, m_nodes);
+        m_root = internal::build_over_live_primitives(
+            m_primitives, [&](Index v) -> const Eigen::Vector3d& { return m_positions[v]; }, m_centroids, m_nodes);
         internal::postorder(m_nodes, m_root, m_order);
         m_boxes.resize(m_nodes.size());
         ++m_stats.rebuilds;

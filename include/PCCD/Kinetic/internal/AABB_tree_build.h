@@ -1,7 +1,8 @@
-// PCCD/Kinetic/internal/AABB_tree_build.h -- the static top-down build shared by the kinetic tree
-// and its baselines (ALGORITHMS.md section 7: "build any static AABB tree of logarithmic height").
-// Median split of primitive centroids along the longest side of their box: a binary tree with one
-// primitive per leaf and height ceil(log2 n), in O(n log n).
+// PCCD/Kinetic/internal/AABB_tree_build.h -- the one static top-down build of Kinetic_AABB_tree and
+// Refit_AABB_tree (doc/manual/kinetic.md, "Building and advancing": "a median split of the
+// primitives' centroids"; Refit_AABB_tree's rebuild uses it at every frame): median split of
+// primitive centroids along the longest side of their box, a binary tree with one primitive per
+// leaf and height ceil(log2 n), in O(n log n); plus the node type and the walks both trees share.
 #pragma once
 
 #include <algorithm>
@@ -13,6 +14,8 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+
+#include <PCCD/Kinetic/internal/Primitive_slots.h>
 
 namespace PCCD::internal {
 
@@ -72,6 +75,26 @@ inline std::uint32_t build_median_split(std::vector<std::uint32_t> primitives, c
         stack.push_back({task.begin, mid, index, true});
     }
     return root;
+}
+
+/// Builds the tree over the live primitives of `primitives` into `nodes` (appended) with
+/// build_median_split; returns the root. The centroid of primitive i, the mean of `position(v)`
+/// over its vertices v, goes to centroids[i] (resized to the slots' capacity).
+template <class P, class Position>
+std::uint32_t build_over_live_primitives(const Primitive_slots<P>& primitives, Position&& position,
+                                         std::vector<Eigen::Vector3d>& centroids, std::vector<AABB_node>& nodes)
+{
+    std::vector<std::uint32_t> ids;
+    ids.reserve(primitives.live_count());
+    centroids.resize(primitives.capacity());
+    for (std::uint32_t i = 0; i < std::uint32_t(primitives.capacity()); ++i) {
+        if (!primitives.contains(i)) continue;
+        ids.push_back(i);
+        Eigen::Vector3d c = Eigen::Vector3d::Zero();
+        for (std::size_t k = 0; k < P::vertex_count; ++k) c += position(std::uint32_t(primitives[i].vertex(k)));
+        centroids[i] = c / double(P::vertex_count);
+    }
+    return build_median_split(std::move(ids), centroids, nodes);
 }
 
 /// Nodes of the subtree of `root` in post-order (children before parents).

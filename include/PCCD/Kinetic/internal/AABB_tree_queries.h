@@ -1,7 +1,8 @@
-// PCCD/Kinetic/internal/AABB_tree_queries.h -- the queries shared by Kinetic_AABB_tree and its
-// baselines (ALGORITHMS.md section 7: "then run queries (collision, ray casting) on a BVH valid at
-// time t"): box overlap of two trees, self-overlap without adjacent primitives, box range queries,
-// first hit of a ray on triangles, and a generic simultaneous traversal with user callbacks.
+// PCCD/Kinetic/internal/AABB_tree_queries.h -- the queries shared by Kinetic_AABB_tree and
+// Refit_AABB_tree (doc/manual/kinetic.md, "Queries"): box overlap of two trees, self-overlap
+// without adjacent primitives, box range queries, first hit of a ray on triangles, and a generic
+// simultaneous traversal with user callbacks. The public pieces they use, Kinetic_ray,
+// intersect_ray_triangle and boxes_overlap, have headers of their own.
 //
 // A tree is read through: root(), is_leaf(n), left(n), right(n), leaf_primitive(n), box(n) (the
 // node's box at the tree's current time), primitive(i) and vertex_position(v).
@@ -21,58 +22,12 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <PCCD/Kinetic/Kinetic_ray.h>
+#include <PCCD/Kinetic/boxes_overlap.h>
+#include <PCCD/Kinetic/intersect_ray_triangle.h>
 #include <PCCD/Kinetic/internal/AABB_tree_build.h>
 
-namespace PCCD {
-
-/// A ray origin + s * direction, s in [s_min, s_max].
-struct Kinetic_ray {
-    Eigen::Vector3d origin = Eigen::Vector3d::Zero();
-    Eigen::Vector3d direction = Eigen::Vector3d::UnitX();
-    double s_min = 0.0;
-    double s_max = std::numeric_limits<double>::infinity();
-};
-
-/// The first hit of a ray: the primitive, the ray parameter s and the barycentric coordinates
-/// (u, v) of the hit point p = (1 - u - v) a + u b + v c on triangle (a, b, c).
-struct Kinetic_ray_hit {
-    std::uint32_t primitive = 0;
-    double s = 0.0;
-    double u = 0.0;
-    double v = 0.0;
-};
-
-/// Ray-triangle intersection (Moeller-Trumbore), the leaf test of every ray query; exposed so that
-/// callers can check answers against brute force. Returns the hit parameter s within
-/// [ray.s_min, ray.s_max] and the barycentrics; nothing for a miss or a ray parallel to the plane.
-inline std::optional<Kinetic_ray_hit> intersect_ray_triangle(const Kinetic_ray& ray, const Eigen::Vector3d& a,
-                                                             const Eigen::Vector3d& b, const Eigen::Vector3d& c)
-{
-    const Eigen::Vector3d e1 = b - a, e2 = c - a;
-    const Eigen::Vector3d p = ray.direction.cross(e2);
-    const double det = e1.dot(p);
-    if (det == 0.0) return std::nullopt;
-    const double inv = 1.0 / det;
-    const Eigen::Vector3d tv = ray.origin - a;
-    const double u = tv.dot(p) * inv;
-    if (u < 0.0 || u > 1.0) return std::nullopt;
-    const Eigen::Vector3d q = tv.cross(e1);
-    const double v = ray.direction.dot(q) * inv;
-    if (v < 0.0 || u + v > 1.0) return std::nullopt;
-    const double s = e2.dot(q) * inv;
-    if (!(s >= ray.s_min && s <= ray.s_max)) return std::nullopt;
-    return Kinetic_ray_hit{0, s, u, v};
-}
-
-/// Closed boxes `a` and `b`, `a` grown by `margin` on every side, overlap.
-inline bool boxes_overlap(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b, double margin)
-{
-    for (int i = 0; i < 3; ++i)
-        if (a.min()[i] - margin > b.max()[i] || b.min()[i] > a.max()[i] + margin) return false;
-    return true;
-}
-
-namespace internal {
+namespace PCCD::internal {
 
 template <class Tree>
 bool primitives_adjacent(const Tree& tree, std::uint32_t i, std::uint32_t j)
@@ -257,5 +212,4 @@ void first_hits(const Tree& tree, const Rays& rays, std::vector<std::optional<Ki
     for (const Kinetic_ray& ray : rays) out.push_back(first_hit(tree, ray));
 }
 
-} // namespace internal
-} // namespace PCCD
+} // namespace PCCD::internal

@@ -1,6 +1,7 @@
-// PCCD/Kinetic/internal/Piecewise_cubic.h -- robust crossing times of piecewise polynomial
-// trajectories of degree <= 3, the numerical core of every shipped Flightplan model (ALGORITHMS.md
-// section 7, "a certificate fails when two vertices' coordinate trajectories cross").
+// PCCD/Kinetic/internal/Piecewise_cubic.h -- robust crossing times of one piece of the difference
+// of two piecewise polynomial trajectories of degree <= 3, the numerical core of next_crossing
+// (next_crossing.h) and so of every shipped Flightplan model (doc/manual/kinetic.md, "Flightplans":
+// "Crossings are isolated robustly").
 //
 // The difference d = a - b of two coordinate trajectories is cut at the union of both key-frame
 // boundaries. On each merged segment d is a polynomial, expanded around the segment start (a point
@@ -24,40 +25,9 @@
 #include <cstddef>
 #include <limits>
 
+#include <PCCD/Kinetic/Cubic.h>
+
 namespace PCCD::internal {
-
-/// c[0] + c[1] u + c[2] u^2 + c[3] u^3, u = time minus an origin stored next to it.
-struct Cubic {
-    std::array<double, 4> c{0.0, 0.0, 0.0, 0.0};
-
-    double operator()(double u) const { return ((c[3] * u + c[2]) * u + c[1]) * u + c[0]; }
-
-    /// The same polynomial in v = u - delta (Taylor shift), i.e. expanded around origin + delta.
-    Cubic shifted(double delta) const
-    {
-        if (delta == 0.0) return *this;
-        Cubic s;
-        s.c[0] = (*this)(delta);
-        s.c[1] = (3.0 * c[3] * delta + 2.0 * c[2]) * delta + c[1];
-        s.c[2] = 3.0 * c[3] * delta + c[2];
-        s.c[3] = c[3];
-        return s;
-    }
-
-    friend Cubic operator-(const Cubic& a, const Cubic& b)
-    {
-        Cubic d;
-        for (std::size_t i = 0; i < 4; ++i) d.c[i] = a.c[i] - b.c[i];
-        return d;
-    }
-
-    int degree() const
-    {
-        for (int i = 3; i >= 0; --i)
-            if (c[std::size_t(i)] != 0.0) return i;
-        return -1;
-    }
-};
 
 inline constexpr double infinity = std::numeric_limits<double>::infinity();
 
@@ -157,31 +127,6 @@ inline double first_negative_time(const Cubic& p, double lo, double hi, double o
         }
     }
     return infinity;
-}
-
-/// The generic `next_crossing` of the shipped flightplans. `F` exposes its trajectory as pieces
-/// k = 0 .. piece_count() - 1 covering the time line, piece k on [piece_begin(k), piece_end(k)),
-/// the first beginning at -infinity and the last ending at +infinity, each a cubic per axis in
-/// u = s - piece_origin(k) (`piece_cubic(k, axis)`), and `piece_at(t)` finding the piece of t.
-template <class F>
-double next_crossing(const F& a, const F& b, int axis, double t)
-{
-    std::size_t ka = a.piece_at(t), kb = b.piece_at(t);
-    for (;;) {
-        const double a_end = a.piece_end(ka), b_end = b.piece_end(kb);
-        const double lo = std::max(a.piece_begin(ka), b.piece_begin(kb));
-        const double hi = std::min(a_end, b_end);
-        const double origin = std::isfinite(lo)   ? lo
-                              : std::isfinite(hi) ? hi
-                                                  : std::max(a.piece_origin(ka), b.piece_origin(kb));
-        const Cubic d = a.piece_cubic(ka, axis).shifted(origin - a.piece_origin(ka)) -
-                        b.piece_cubic(kb, axis).shifted(origin - b.piece_origin(kb));
-        const double found = first_negative_time(d, std::isfinite(lo) ? 0.0 : lo,
-                                                 std::isfinite(hi) ? hi - origin : hi, origin, t);
-        if (found != infinity || hi == infinity) return found;
-        if (a_end == hi) ++ka;
-        if (b_end == hi) ++kb;
-    }
 }
 
 } // namespace PCCD::internal

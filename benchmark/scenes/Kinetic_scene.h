@@ -1,7 +1,8 @@
-// PCCD/Kinetic/Scenes/Kinetic_scene.h -- the recorded animations that test, benchmark and
-// demonstrate the kinetic AABB tree (ALGORITHMS.md section 7, "Published: table cloth falling on a
-// table"): vertex trajectories recorded as key frames, i.e. piecewise-linear flightplans, the
-// primitives over them, and an optional static obstacle.
+// benchmark/scenes/Kinetic_scene.h -- the recorded animation that the kinetic tests, benchmarks,
+// `pccd kinetic-bench` and the cloth example play (doc/manual/kinetic.md, "Scenes"): vertex
+// trajectories recorded as key frames, i.e. piecewise-linear flightplans, the primitives over them,
+// and an optional static obstacle. Not library code: PCCD's own programs reach benchmark/scenes/
+// through the CMake target pccd_kinetic_scenes, and it is never installed.
 #pragma once
 
 #include <string>

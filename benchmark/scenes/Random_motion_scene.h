@@ -1,6 +1,6 @@
-// PCCD/Kinetic/Scenes/Random_motion_scene.h -- points in random linear motion (ALGORITHMS.md
-// section 7, Theorem 2's setting: each pair of flightplans crosses at most once per axis, so the
-// kinetic tree processes O(n log n) events over the whole animation).
+// benchmark/scenes/Random_motion_scene.h -- points in random linear motion (doc/manual/kinetic.md,
+// "Scenes"), the setting of the O(n log n) event bound ("Flightplans"): each pair of flightplans
+// crosses at most once per axis. Not library code (target pccd_kinetic_scenes, never installed).
 #pragma once
 
 #include <cmath>
@@ -12,7 +12,7 @@
 #include <Eigen/Core>
 
 #include <PCCD/Error.h>
-#include <PCCD/Kinetic/Scenes/Kinetic_scene.h>
+#include "Kinetic_scene.h"
 #include <PCCD/Random.h>
 
 namespace PCCD {

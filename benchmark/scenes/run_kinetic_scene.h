@@ -1,7 +1,9 @@
-// PCCD/Kinetic/Scenes/run_kinetic_scene.h -- plays a recorded scene with one of the three update
-// strategies of ALGORITHMS.md section 7 (kinetic events, bottom-up refit, full rebuild), answering
-// queries at a fixed rate, and reports the counters and timings the talk compares. Used by
-// benchmark/kinetic_benchmark.cpp and `pccd kinetic-bench`; usable on any recorded Kinetic_scene.
+// benchmark/scenes/run_kinetic_scene.h -- plays a recorded scene with one of the three update
+// strategies of doc/manual/kinetic.md ("Building and advancing", "Baselines with the same
+// interface": kinetic events, bottom-up refit, full rebuild), answering queries at a fixed rate, and
+// reports the counters and timings of "When to use which". Used by benchmark/kinetic_benchmark.cpp,
+// `pccd kinetic-bench` and the kinetic tests; usable on any recorded Kinetic_scene. Not library code
+// (target pccd_kinetic_scenes, never installed).
 //
 // The queries of a frame (Kinetic_run_options): the overlap with the scene's obstacle (or a range
 // query without one), optionally the self-overlap, and optionally `rays_per_frame` first-hit ray
@@ -29,7 +31,7 @@
 #include <PCCD/Kinetic/Event_queue.h>
 #include <PCCD/Kinetic/Kinetic_AABB_tree.h>
 #include <PCCD/Kinetic/Refit_AABB_tree.h>
-#include <PCCD/Kinetic/Scenes/Kinetic_scene.h>
+#include "Kinetic_scene.h"
 
 namespace PCCD {
 

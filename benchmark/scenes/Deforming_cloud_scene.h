@@ -1,33 +1,37 @@
-// PCCD/Kinetic/Scenes/Deforming_cloud_scene.h -- a deforming point cloud for the kinetic AABB tree
-// (ALGORITHMS.md section 7, "can handle all kinds of object representations ... point clouds"): a
-// shape that twists about its vertical axis and breathes (scales periodically), recorded as key
-// frames. The shape is the vertex set of an OFF file (e.g. CGAL's bunny00.off) or, without a file,
-// a procedural bumpy sphere.
+// benchmark/scenes/Deforming_cloud_scene.h -- a deforming point cloud for the kinetic AABB tree
+// (doc/manual/kinetic.md, "Scenes"; the tree over Kinetic_point primitives of "Building and
+// advancing"): a shape that twists about its vertical axis and breathes (scales periodically),
+// recorded as key frames. The shape is the vertex set of an OFF mesh read by
+// PCCD::IO::read_triangle_mesh (e.g. CGAL's bunny00.off) or, without a file, a procedural bumpy
+// sphere. Not library code (target pccd_kinetic_scenes, which links CGAL for the reader; never
+// installed).
 #pragma once
 
-#include <cctype>
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <fstream>
 #include <memory>
 #include <numbers>
-#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include <PCCD/Error.h>
-#include <PCCD/Kinetic/Scenes/Kinetic_scene.h>
+#include <PCCD/IO/Format.h>
+#include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Random.h>
-#include <PCCD/internal/finite.h>
+
+#include "Kinetic_scene.h"
 
 namespace PCCD {
 
 /// Options of make_deforming_cloud_scene.
 struct Deforming_cloud_options {
-    /// OFF file whose vertices form the cloud; "" (default) uses the procedural bumpy sphere.
+    /// OFF file of a triangle mesh whose vertices (all of them, in file order; the faces are
+    /// ignored) form the cloud; "" (default) uses the procedural bumpy sphere.
     std::string off_file = "";
     /// Number of points: a random subset of the file's vertices (all when 0 or larger than the file),
     /// or the size of the procedural cloud (0 means 2000); default 0.
@@ -47,34 +51,6 @@ struct Deforming_cloud_options {
 };
 
 namespace internal {
-
-/// The vertices of an OFF file ("OFF", counts, vertices; faces are ignored). Comments (#) allowed.
-/// \throws File_error if the file is missing, not OFF, truncated or has non-finite coordinates.
-inline std::vector<Eigen::Vector3d> read_off_vertices(const std::string& file)
-{
-    std::ifstream in(file);
-    if (!in) throw File_error(file, "cannot open");
-    std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    std::istringstream text;
-    {
-        std::string cleaned;
-        std::istringstream lines(content);
-        for (std::string line; std::getline(lines, line);) cleaned += line.substr(0, line.find('#')) + '\n';
-        text.str(cleaned);
-    }
-    std::string magic;
-    if (!(text >> magic) || magic != "OFF") throw File_error(file, "not an OFF file (missing 'OFF' header)");
-    std::size_t vertices = 0, faces = 0, edges = 0;
-    if (!(text >> vertices >> faces >> edges)) throw File_error(file, "malformed OFF counts line");
-    if (vertices == 0) throw File_error(file, "OFF file without vertices");
-    std::vector<Eigen::Vector3d> points(vertices);
-    for (std::size_t i = 0; i < vertices; ++i) {
-        if (!(text >> points[i].x() >> points[i].y() >> points[i].z()))
-            throw File_error(file, concat("truncated or malformed vertex ", i));
-        if (!internal::all_finite(points[i])) throw File_error(file, concat("vertex ", i, " is not finite"));
-    }
-    return points;
-}
 
 /// n points on a sphere of radius 1 with smooth radial bumps (Fibonacci spiral + random jitter).
 inline std::vector<Eigen::Vector3d> bumpy_sphere(std::size_t n, Random_engine& rng)
@@ -97,8 +73,8 @@ inline std::vector<Eigen::Vector3d> bumpy_sphere(std::size_t n, Random_engine& r
 /// A point cloud that twists and breathes, recorded as key frames (Kinetic_point primitives).
 /// The shape is centred and scaled to height 2; the twist angle grows linearly with height and
 /// oscillates in time, so the extreme points change many times along every axis.
-/// \throws File_error if `off_file` is given but unreadable; Invalid_input for non-positive
-///         duration, key rate or frequency.
+/// \throws File_error if `off_file` is given but unusable (with read_triangle_mesh's messages);
+///         Invalid_input for non-positive duration, key rate or frequency.
 inline Kinetic_scene<Kinetic_point> make_deforming_cloud_scene(const Deforming_cloud_options& o = {})
 {
     if (!std::isgreater(o.duration, 0.0) || !std::isgreater(o.key_rate, 0.0) || !std::isgreater(o.frequency, 0.0))
@@ -111,7 +87,7 @@ inline Kinetic_scene<Kinetic_point> make_deforming_cloud_scene(const Deforming_c
         shape = internal::bumpy_sphere(o.points == 0 ? 2000 : o.points, rng);
         scene.name = "bumpy sphere";
     } else {
-        shape = internal::read_off_vertices(o.off_file);
+        shape = IO::read_triangle_mesh(o.off_file, IO::Format::off).vertices;
         if (o.points > 0 && o.points < shape.size()) {
             for (std::size_t i = 0; i < o.points; ++i)
                 std::swap(shape[i], shape[i + std::size_t(uniform_index(rng, shape.size() - i))]);

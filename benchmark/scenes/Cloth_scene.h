@@ -1,7 +1,8 @@
-// PCCD/Kinetic/Scenes/Cloth_scene.h -- the talk's benchmark scene (ALGORITHMS.md section 7): a
-// table cloth falling onto a table, simulated here by a small mass-spring model written for the
-// benchmark, and recorded as key frames. Triangle counts near the talk's 1,684, 6,891 and 15,503
-// come from a rectangular grid of quads, two triangles each.
+// benchmark/scenes/Cloth_scene.h -- the talk's benchmark scene (doc/manual/kinetic.md, "Scenes";
+// figures in doc/benchmarks.md, "Kinetic AABB tree"): a table cloth falling onto a table, simulated
+// here by a small mass-spring model written for the benchmark, and recorded as key frames. Triangle
+// counts near the talk's 1,684, 6,891 and 15,503 come from a rectangular grid of quads, two
+// triangles each. Not library code (target pccd_kinetic_scenes, never installed).
 #pragma once
 
 #include <algorithm>
@@ -17,7 +18,7 @@
 #include <Eigen/Core>
 
 #include <PCCD/Error.h>
-#include <PCCD/Kinetic/Scenes/Kinetic_scene.h>
+#include "Kinetic_scene.h"
 
 namespace PCCD {
 
