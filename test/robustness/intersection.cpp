@@ -203,11 +203,27 @@ TEST_CASE("intersection: tiny and degenerate objects against a sphere", "[robust
     };
     for (const auto& [name, points] : clouds) {
         const Object tiny(points);
-        for (const Transform& pose : {shifted(0.0, 0.0, 0.05), shifted(3.0)}) {
+        // What the answers must be: far away, separate; near (1, 0, 0.05), the flat patch (a plane
+        // z = 0.05 across the sphere) intersects it along an arc, while points on a line or two
+        // points define no surface (every evaluation is degenerate), so nothing can intersect them.
+        const bool surface = name == "flat";
+        const bool has_truth = surface || name == "two points" || name == "collinear" || name == "oblique collinear";
+        for (const bool near : {true, false}) {
+            const Transform pose = near ? shifted(0.0, 0.0, 0.05) : shifted(3.0);
             INFO(name << ", pose shift " << pose.translation().transpose());
-            all_queries(tiny, pose, sphere, Transform());
-            all_queries(sphere, Transform(), tiny, pose, {.refinement = PCCD::Refinement::sampling, .refinement_samples = 8});
+            std::vector<PCCD::Intersection_result> results = all_queries(tiny, pose, sphere, Transform());
+            for (auto& r : all_queries(sphere, Transform(), tiny, pose,
+                                       {.refinement = PCCD::Refinement::sampling, .refinement_samples = 8}))
+                results.push_back(std::move(r));
             all_queries(tiny, pose, tiny, pose);
+            if (!has_truth) continue;
+            for (const auto& r : results) {
+                CHECK(r.intersects == (near && surface));
+                for (const auto& p : r.points) { // on the arc: on the sphere and on the plane
+                    CHECK(std::abs(p.position.norm() - 1.0) < 0.05);
+                    CHECK(std::abs(p.position.z() - 0.05) < 0.02);
+                }
+            }
         }
     }
 }
