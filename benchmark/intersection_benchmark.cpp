@@ -27,6 +27,10 @@
 // Plots: benchmark/intersection_plots.gp. Figures and discussion: doc/benchmarks.md.
 #include "collision_baselines.h"
 
+#include <common/csv.h>
+#include <common/statistics.h>
+#include <common/timing.h>
+
 #include <PCCD/Exact/Exact_mesh.h>
 #include <PCCD/Exact/mesh_separation.h>
 #include <PCCD/IO/read_triangle_mesh.h>
@@ -58,13 +62,12 @@
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using pccd_bench::Clock;
+using pccd_bench::mean;
+using pccd_bench::median;
+using pccd_bench::ms_since;
+using pccd_bench::us_since;
 using Pose = PCCD::Rigid_transform_3<double>;
-
-double ms_since(Clock::time_point start)
-{
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 struct Arguments {
     int figure = 10;
@@ -109,21 +112,6 @@ Arguments parse(int argc, char** argv)
     if (a.repetitions < 1) throw std::invalid_argument("--repetitions must be >= 1");
     if (a.rotations == 0 || a.rotations_fig9 == 0) throw std::invalid_argument("rotation counts must be >= 1");
     return a;
-}
-
-double median(std::vector<double> values)
-{
-    if (values.empty()) return std::nan("");
-    const auto middle = values.begin() + std::ptrdiff_t(values.size() / 2);
-    std::nth_element(values.begin(), middle, values.end());
-    if (values.size() % 2 == 1) return *middle;
-    return 0.5 * (*middle + *std::max_element(values.begin(), middle));
-}
-
-double mean(const std::vector<double>& values)
-{
-    if (values.empty()) return std::nan("");
-    return std::accumulate(values.begin(), values.end(), 0.0) / double(values.size());
 }
 
 /// The bunny mesh normalized into [-1, 1]^3 (the benchmark procedure, doc/manual/sampling.md), or nothing without the data.
@@ -200,7 +188,7 @@ Timed_answer timed(int repetitions, const Method& method, const PCCD::Benchmark_
         const double cpu_start = thread_cpu_us();
         const auto start = Clock::now();
         answer = method.query(pose, seed);
-        times.push_back(std::chrono::duration<double, std::micro>(Clock::now() - start).count());
+        times.push_back(us_since(start));
         cpu_times.push_back(thread_cpu_us() - cpu_start);
     }
     return {answer, median(times), median(cpu_times)};
@@ -316,13 +304,7 @@ Distance_row& row_for(std::vector<Distance_row>& rows, double distance, std::siz
 /// The seed of the PCCD queries on pose number k (the same for every method and repetition).
 std::uint64_t query_seed(const Arguments& args, std::size_t k) { return args.seed * 1000003ULL + k; }
 
-std::ofstream open_csv(const std::string& path)
-{
-    std::ofstream out(path);
-    if (!out) throw std::runtime_error("cannot write " + path);
-    out.precision(8);
-    return out;
-}
+std::ofstream open_csv(const std::string& path) { return pccd_bench::open_csv(path, 8); }
 
 struct Bunny_setup {
     PCCD::Triangle_mesh_data mesh;

@@ -9,6 +9,8 @@
 #include <PCCD/Sampling/Sphere_shape.h>
 #include <PCCD/Sampling/pose_generator.h>
 
+#include <common/statistics.h>
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -238,8 +240,8 @@ TEST_CASE("Two spheres: intersection_points lie on the exact circle and cover it
             std::vector<double> errors;
             for (const auto& p : result.points) errors.push_back(distance_to_circle(p.position, d));
             std::sort(errors.begin(), errors.end());
-            const double median = errors[errors.size() / 2];
-            const double p95 = errors[std::min(errors.size() - 1, errors.size() * 95 / 100)];
+            const double median = pccd_bench::sorted_quantile(errors, 50);
+            const double p95 = pccd_bench::sorted_quantile(errors, 95);
             // Coverage: exact circle samples with a returned point within 3 spacings.
             const double radius = std::sqrt(1.0 - d * d / 4.0);
             std::size_t covered = 0, total = 720;

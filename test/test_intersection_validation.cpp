@@ -12,6 +12,8 @@
 #include <PCCD/Sampling/pose_generator.h>
 #include <PCCD/Sampling/sample_triangle_mesh.h>
 
+#include <common/statistics.h>
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -199,8 +201,8 @@ TEST_CASE("Validation on the bunny: intersection points against the exact polyli
     REQUIRE(used == curve_poses);
     REQUIRE(!errors.empty());
     std::sort(errors.begin(), errors.end());
-    const double median = errors[errors.size() / 2];
-    const double p95 = errors[std::min(errors.size() - 1, errors.size() * 95 / 100)];
+    const double median = pccd_bench::sorted_quantile(errors, 50);
+    const double p95 = pccd_bench::sorted_quantile(errors, 95);
     const double coverage = double(covered) / double(std::max<std::size_t>(curve_samples, 1));
     std::printf("bunny curves: %zu poses, %zu points (%zu refined), distance to the exact polylines: median %.3f, "
                 "p95 %.3f mean spacings; coverage (3 spacings) %.1f %% of %zu curve samples\n",

@@ -12,6 +12,8 @@
 #include <PCCD/Sampling/pose_generator.h>
 #include <PCCD/Sampling/sample_triangle_mesh.h>
 
+#include <common/statistics.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -105,15 +107,8 @@ Object_points load_bench_points(const Bench_options& o, std::string& description
     return result;
 }
 
-double mean(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / double(v.size()); }
-
-double median(std::vector<double> v)
-{
-    const std::size_t m = v.size() / 2;
-    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(m), v.end());
-    if (v.size() % 2 == 1) return v[m];
-    return 0.5 * (v[m] + *std::max_element(v.begin(), v.begin() + std::ptrdiff_t(m)));
-}
+using pccd_bench::mean;
+using pccd_bench::median;
 
 void run_bench(const Bench_options& o)
 {
