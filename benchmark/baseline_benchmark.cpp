@@ -25,7 +25,7 @@
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Point_cloud.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/normalize.h>
+#include <PCCD/Sampling/Similarity_3.h>
 #include <PCCD/Sampling/pose_generator.h>
 #include <PCCD/Sampling/sample_triangle_mesh.h>
 #include <PCCD/sampling_radius.h>

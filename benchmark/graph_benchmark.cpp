@@ -21,7 +21,7 @@
 #include <PCCD/Proximity_graph/sphere_of_influence_graph.h>
 #include <PCCD/Random.h>
 #include <PCCD/Sampling/Torus_shape.h>
-#include <PCCD/Sampling/normalize.h>
+#include <PCCD/Sampling/Similarity_3.h>
 #include <PCCD/Sampling/sample_triangle_mesh.h>
 #include <PCCD/sampling_radius.h>
 

@@ -7,7 +7,7 @@
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Sampling/Torus_shape.h>
-#include <PCCD/Sampling/normalize.h>
+#include <PCCD/Sampling/Similarity_3.h>
 #include <PCCD/Sampling/sample_triangle_mesh.h>
 
 #include <Eigen/Geometry>

@@ -17,7 +17,7 @@
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/normalize.h>
+#include <PCCD/Sampling/Similarity_3.h>
 #include <PCCD/Sampling/pose_generator.h>
 #include <PCCD/Sampling/sample_triangle_mesh.h>
 

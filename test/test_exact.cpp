@@ -28,7 +28,7 @@
 #include <PCCD/IO/Triangle_mesh_data.h>
 #include <PCCD/Random.h>
 #include <PCCD/Rigid_transform_3.h>
-#include <PCCD/Sampling/normalize.h>
+#include <PCCD/Sampling/Similarity_3.h>
 #include <PCCD/Sampling/pose_generator.h>
 
 namespace {

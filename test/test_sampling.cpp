@@ -12,7 +12,7 @@
 #include <PCCD/Sampling/Plane_patch_shape.h>
 #include <PCCD/Sampling/Sphere_shape.h>
 #include <PCCD/Sampling/Torus_shape.h>
-#include <PCCD/Sampling/normalize.h>
+#include <PCCD/Sampling/Similarity_3.h>
 #include <PCCD/Sampling/pose_generator.h>
 #include <PCCD/Sampling/sample_triangle_mesh.h>
 

@@ -6,7 +6,7 @@
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Random.h>
 #include <PCCD/Sampling/Torus_shape.h>
-#include <PCCD/Sampling/normalize.h>
+#include <PCCD/Sampling/Similarity_3.h>
 #include <PCCD/Sampling/sample_triangle_mesh.h>
 
 #include <cstdint>

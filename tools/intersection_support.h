@@ -9,7 +9,7 @@
 #include <PCCD/IO/read_points.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/normalize.h>
+#include <PCCD/Sampling/Similarity_3.h>
 
 #include <common/timing.h>
 

@@ -5,7 +5,7 @@
 
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/normalize.h>
+#include <PCCD/Sampling/Similarity_3.h>
 #include <PCCD/Sampling/sample_triangle_mesh.h>
 
 #include <cstdio>
