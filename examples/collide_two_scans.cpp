@@ -1,4 +1,4 @@
-// Two scans of one object and whether they collide in given poses (ALGORITHMS.md sections 6 and 8).
+// Two scans of one object and whether they collide in given poses (doc/manual/intersection.md).
 // Each scan is preprocessed once into a Point_cloud_object; do_intersect() then answers for any pair
 // of rigid poses (here built from an Eigen rotation and translation) without rebuilding anything, and
 // reports the work it did. The scans are two independent samples of the Stanford bunny of Debian's

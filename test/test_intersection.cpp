@@ -1,5 +1,5 @@
 // Tests of the point cloud hierarchy, the overlap region and the stochastic intersection queries
-// (ALGORITHMS.md sections 4-6) against independent truths: brute force over leaves and points, and
+// (doc/manual/intersection.md) against independent truths: brute force over leaves and points, and
 // two analytic spheres whose intersection circle is known in closed form.
 #include <PCCD/Hierarchy/Point_cloud_hierarchy.h>
 #include <PCCD/Hierarchy/overlapping_leaves.h>

@@ -1,7 +1,8 @@
-// Validation of the stochastic intersection against CGAL's exact answer (issue 5; ALGORITHMS.md
-// section 8): clouds sampled from the bunny mesh, the benchmark pose procedure, do_intersect() of
-// both policies compared with exact_separation() pose by pose (grazing poses counted apart), and
-// intersection_points() compared with the exact intersection polylines. Prints its figures.
+// Validation of the stochastic intersection against CGAL's exact answer (doc/manual/exact.md, the
+// poses of doc/manual/sampling.md): clouds sampled from the bunny mesh, the benchmark pose
+// procedure, do_intersect() of both policies compared with exact_separation() pose by pose
+// (grazing poses counted apart), and intersection_points() compared with the exact intersection
+// polylines. Prints its figures.
 #include <PCCD/Exact/Exact_mesh.h>
 #include <PCCD/Exact/mesh_intersection.h>
 #include <PCCD/Exact/mesh_separation.h>

@@ -1,5 +1,5 @@
 // pccd bench FILE [--method isearch|rst] [--distances 0:3:0.25] [--rotations R] [--seed S]
-//   [--points N] [--csv OUT]: the benchmark procedure of ALGORITHMS.md section 8 on one object:
+//   [--points N] [--csv OUT]: the benchmark procedure of doc/manual/sampling.md on one object:
 // two copies of it, normalized into [-1, 1]^3, A at [R_A | 0] and B at [R_B | (d, 0, 0)] for every
 // distance d and R random rotation pairs; one first-hit query (do_intersect) per pose, single
 // thread, timed with steady_clock; per distance: poses, colliding poses, mean and median time,
