@@ -16,12 +16,16 @@
 // <m>_false_positives (non-grazing poses), <m>_grazing_false_negatives, <m>_grazing_false_positives.
 #include "collision_baselines.h"
 
+#include <common/csv.h>
+#include <common/statistics.h>
+#include <common/timing.h>
+
 #include <PCCD/Exact/Exact_mesh.h>
 #include <PCCD/Exact/mesh_separation.h>
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Point_cloud.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/normalize.h>
+#include <PCCD/Sampling/Similarity_3.h>
 #include <PCCD/Sampling/pose_generator.h>
 #include <PCCD/Sampling/sample_triangle_mesh.h>
 #include <PCCD/sampling_radius.h>
@@ -41,12 +45,11 @@
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point start)
-{
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
+using pccd_bench::Clock;
+using pccd_bench::mean;
+using pccd_bench::median;
+using pccd_bench::ms_since;
+using pccd_bench::us_since;
 
 struct Arguments {
     std::size_t points = 30000;
@@ -75,19 +78,6 @@ Arguments parse(int argc, char** argv)
     return a;
 }
 
-double median(std::vector<double> values)
-{
-    const auto middle = values.begin() + std::ptrdiff_t(values.size() / 2);
-    std::nth_element(values.begin(), middle, values.end());
-    if (values.size() % 2 == 1) return *middle;
-    return 0.5 * (*middle + *std::max_element(values.begin(), middle));
-}
-
-double mean(const std::vector<double>& values)
-{
-    return std::accumulate(values.begin(), values.end(), 0.0) / double(values.size());
-}
-
 /// The answer of one query and the median of its run times, in microseconds.
 template <class Query>
 std::pair<bool, double> timed(int repetitions, const Query& query)
@@ -97,7 +87,7 @@ std::pair<bool, double> timed(int repetitions, const Query& query)
     for (int r = 0; r < repetitions; ++r) {
         const auto start = Clock::now();
         answer = query();
-        times.push_back(std::chrono::duration<double, std::micro>(Clock::now() - start).count());
+        times.push_back(us_since(start));
     }
     return {answer, median(times)};
 }
@@ -226,8 +216,7 @@ try {
     std::printf(".\n");
 
     if (!args.csv.empty()) {
-        std::ofstream out(args.csv);
-        if (!out) throw std::runtime_error("cannot write " + args.csv);
+        std::ofstream out = pccd_bench::open_csv(args.csv);
         out << "distance,poses,exact_colliding,grazing,grazing_exact_colliding";
         for (const char* name : method_names)
             out << ',' << name << "_mean_us," << name << "_median_us," << name << "_false_negatives," << name

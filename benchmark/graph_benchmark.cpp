@@ -21,9 +21,11 @@
 #include <PCCD/Proximity_graph/sphere_of_influence_graph.h>
 #include <PCCD/Random.h>
 #include <PCCD/Sampling/Torus_shape.h>
-#include <PCCD/Sampling/normalize.h>
+#include <PCCD/Sampling/Similarity_3.h>
 #include <PCCD/Sampling/sample_triangle_mesh.h>
 #include <PCCD/sampling_radius.h>
+
+#include <common/timing.h>
 
 #include <algorithm>
 #include <chrono>
@@ -40,12 +42,8 @@
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point start)
-{
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
+using pccd_bench::Clock;
+using pccd_bench::ms_since;
 
 /// CPU time of the whole process (all threads), in ms: on a shared machine it is the figure that
 /// other processes' load does not inflate.

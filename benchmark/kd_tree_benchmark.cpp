@@ -13,6 +13,9 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/property_map.h>
 
+#include <common/statistics.h>
+#include <common/timing.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -24,18 +27,9 @@
 namespace {
 
 using Coordinates = Eigen::Matrix<double, 3, Eigen::Dynamic>;
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start)
-{
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-double median(std::vector<double> v)
-{
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
+using pccd_bench::Clock;
+using pccd_bench::seconds_since;
+using pccd_bench::upper_median;
 
 Coordinates make_points(const std::string& kind, int n, PCCD::Random_engine& rng)
 {
@@ -154,7 +148,7 @@ int main(int argc, char** argv)
         }
         const char* names[2] = {"nanoflann", "cgal"};
         for (int b = 0; b < 2; ++b) {
-            const double bm = 1e3 * median(build[b]), qm = 1e3 * median(query[b]);
+            const double bm = 1e3 * upper_median(build[b]), qm = 1e3 * upper_median(query[b]);
             std::printf("%-7s %-10s %9d %9d %3d %14.1f %14.1f %12.3f\n", kind.c_str(), names[b], n, q, k, bm, qm,
                         1e3 * qm / q);
             char line[256];
@@ -163,7 +157,7 @@ int main(int argc, char** argv)
             csv += line;
         }
         std::printf("%-7s ratio cgal/nanoflann: build %.2f, queries %.2f\n", kind.c_str(),
-                    median(build[1]) / median(build[0]), median(query[1]) / median(query[0]));
+                    upper_median(build[1]) / upper_median(build[0]), upper_median(query[1]) / upper_median(query[0]));
     }
     if (!csv_path.empty()) std::ofstream(csv_path) << csv;
     return 0;

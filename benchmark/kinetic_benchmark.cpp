@@ -21,6 +21,9 @@
 #include <scenes/Cloth_scene.h>
 #include <scenes/run_kinetic_scene.h>
 
+#include <common/statistics.h>
+#include <common/timing.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstddef>
@@ -42,11 +45,7 @@ std::vector<double> parse_list(const std::string& text)
     return values;
 }
 
-double median(std::vector<double> v)
-{
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
+using pccd_bench::median;
 
 } // namespace
 
@@ -81,7 +80,7 @@ int main(int argc, char** argv)
     for (const double size : sizes) {
         const auto sim_start = std::chrono::steady_clock::now();
         const auto scene = PCCD::make_cloth_scene({.triangles = std::size_t(size)});
-        const double sim_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - sim_start).count();
+        const double sim_s = pccd_bench::seconds_since(sim_start);
         std::cout << "cloth: " << scene.primitives.size() << " triangles, " << scene.flightplans.size() << " vertices, "
                   << scene.end_time << " s recorded in " << sim_s << " s of simulation\n";
         struct Variant {

@@ -15,6 +15,9 @@
 #include <PCCD/Proximity_graph/internal/graph_construction.h>
 #include <PCCD/Sampling/Sphere_shape.h>
 
+#include <common/statistics.h>
+#include <common/timing.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -25,9 +28,8 @@
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+using pccd_bench::Clock;
+using pccd_bench::seconds_since;
 
 template <class Evaluate>
 double median_rate(std::size_t count, int repetitions, const Evaluate& evaluate, double& checksum)
@@ -40,8 +42,7 @@ double median_rate(std::size_t count, int repetitions, const Evaluate& evaluate,
         rates.push_back(double(count) / seconds_since(start));
         checksum = sum;
     }
-    std::nth_element(rates.begin(), rates.begin() + std::ptrdiff_t(rates.size() / 2), rates.end());
-    return rates[rates.size() / 2];
+    return pccd_bench::upper_median(std::move(rates));
 }
 
 // The value, or 0 where undefined (so that the loop cannot be optimized away).

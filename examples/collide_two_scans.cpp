@@ -1,4 +1,4 @@
-// Two scans of one object and whether they collide in given poses (ALGORITHMS.md sections 6 and 8).
+// Two scans of one object and whether they collide in given poses (doc/manual/intersection.md).
 // Each scan is preprocessed once into a Point_cloud_object; do_intersect() then answers for any pair
 // of rigid poses (here built from an Eigen rotation and translation) without rebuilding anything, and
 // reports the work it did. The scans are two independent samples of the Stanford bunny of Debian's
@@ -7,7 +7,7 @@
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Sampling/Torus_shape.h>
-#include <PCCD/Sampling/normalize.h>
+#include <PCCD/Sampling/Similarity_3.h>
 #include <PCCD/Sampling/sample_triangle_mesh.h>
 
 #include <Eigen/Geometry>

@@ -1,7 +1,8 @@
 // Accuracy of first-hit and curve queries on clouds that look like scans, against CGAL's exact
 // answer and next to the naive point test on the very same clouds. Shared by the validation test
 // (test_scan_validation.cpp) and the benchmark program (benchmark/scan_accuracy.cpp), which print
-// the same table; doc/benchmarks.md "Accuracy on scans" explains it.
+// the same table; doc/benchmarks.md "Accuracy on scans" explains it, and it checks the accuracy
+// claims of doc/manual/intersection.md ("Accuracy").
 //
 // For each closed scanned mesh (normalized into [-1, 1]^3) and each cloud condition, one cloud is
 // drawn uniformly by area from the mesh and preprocessed once; the benchmark pose procedure (two
@@ -16,9 +17,12 @@
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/normalize.h>
+#include <PCCD/Sampling/Similarity_3.h>
 #include <PCCD/Sampling/pose_generator.h>
 #include <PCCD/Sampling/sample_triangle_mesh.h>
+
+#include <common/statistics.h>
+#include <common/timing.h>
 
 #include <algorithm>
 #include <chrono>
@@ -121,10 +125,9 @@ inline Scan_cloud make_scan_cloud(const Scan_model& model, const Scan_condition&
         }
     }
     Scan_cloud c;
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = pccd_bench::Clock::now();
     c.object = std::make_unique<PCCD::Point_cloud_object<>>(points, PCCD::Identity_point_map<Eigen::Vector3d>(), options);
-    c.preprocessing_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    c.preprocessing_ms = pccd_bench::ms_since(start);
     c.raw = std::make_unique<PCCD::Point_cloud<>>(points);
     c.spacing = c.raw->mean_spacing();
     return c;
@@ -193,11 +196,6 @@ struct Scan_row {
     double isearch_mean_us = 0.0, rst_mean_us = 0.0;
 };
 
-inline double us_since(std::chrono::steady_clock::time_point start)
-{
-    return std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
-}
-
 /// Runs both policies and the naive test on every pose of `truth`; prints each wrong non-grazing
 /// answer when `verbose`.
 inline Scan_row evaluate_first_hits(const Scan_model& model, const Scan_condition& condition, const Scan_cloud& cloud,
@@ -213,12 +211,12 @@ inline Scan_row evaluate_first_hits(const Scan_model& model, const Scan_conditio
     std::size_t k = 0;
     for (const Posed_truth& t : truth) {
         options.seed = 1000 + k++;
-        auto start = std::chrono::steady_clock::now();
+        auto start = pccd_bench::Clock::now();
         const auto is = PCCD::do_intersect(o, t.pose.pose_a, o, t.pose.pose_b, options);
-        t_is += us_since(start);
-        start = std::chrono::steady_clock::now();
+        t_is += pccd_bench::us_since(start);
+        start = pccd_bench::Clock::now();
         const auto rst = PCCD::do_intersect(o, t.pose.pose_a, o, t.pose.pose_b, options, PCCD::Randomized_sampling{});
-        t_rst += us_since(start);
+        t_rst += pccd_bench::us_since(start);
         const bool naive = naive_point_test(*cloud.raw, t.pose.pose_a, *cloud.raw, t.pose.pose_b, cloud.spacing);
         row.isearch.add(t.cls, is.intersects);
         row.rst.add(t.cls, rst.intersects);
@@ -328,8 +326,8 @@ inline Curve_figures evaluate_curves(const Scan_model& model, const Scan_cloud& 
     }
     if (!errors.empty()) {
         std::sort(errors.begin(), errors.end());
-        f.median = errors[errors.size() / 2];
-        f.p95 = errors[std::min(errors.size() - 1, errors.size() * 95 / 100)];
+        f.median = pccd_bench::sorted_quantile(errors, 50);
+        f.p95 = pccd_bench::sorted_quantile(errors, 95);
         f.max = errors.back();
     }
     f.coverage = curve_samples ? double(covered) / double(curve_samples) : 0.0;

@@ -28,7 +28,7 @@
 #include <PCCD/IO/Triangle_mesh_data.h>
 #include <PCCD/Random.h>
 #include <PCCD/Rigid_transform_3.h>
-#include <PCCD/Sampling/normalize.h>
+#include <PCCD/Sampling/Similarity_3.h>
 #include <PCCD/Sampling/pose_generator.h>
 
 namespace {
@@ -99,7 +99,7 @@ bool read_data_mesh(const std::string& name, Triangle_mesh_data& mesh)
     return true;
 }
 
-/// The normalization of ALGORITHMS.md section 8 applied to a mesh.
+/// The normalization of doc/manual/sampling.md applied to a mesh.
 void normalize(Triangle_mesh_data& mesh)
 {
     Eigen::Matrix3Xd coordinates(3, mesh.vertices.size());
@@ -609,7 +609,7 @@ TEST_CASE("exact meshes: the bunny against copies of itself", "[exact][mesh][dat
     CHECK(PCCD::exact_do_intersect(bunny, Pose(), bunny, rotated));
     CHECK(PCCD::exact_do_intersect(bunny, Pose(), bunny, rotated) == pmp_do_intersect(bunny, Pose(), bunny, rotated));
 
-    // The benchmark poses of ALGORITHMS.md section 8, one rotation pair per distance, against CGAL's
+    // The benchmark poses of doc/manual/sampling.md, one rotation pair per distance, against CGAL's
     // do_intersect on transformed copies; the separation's sign agrees with the decision.
     int hits = 0, misses = 0;
     for (const auto& pose : PCCD::generate_benchmark_poses({.rotations_per_distance = 1, .seed = 3})) {

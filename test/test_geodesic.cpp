@@ -5,7 +5,8 @@
 
 #include <PCCD/Error.h>
 #include <PCCD/Geodesic/Close_pairs_shortest_paths.h>
-#include <PCCD/Geodesic/shortest_path_on_the_fly.h>
+#include <PCCD/Geodesic/Stored_paths.h>
+#include <PCCD/Geodesic/Paths_on_the_fly.h>
 #include <PCCD/Proximity_graph/graph_components.h>
 #include <PCCD/Proximity_graph/sphere_of_influence_graph.h>
 #include <PCCD/concepts/PathSource.h>

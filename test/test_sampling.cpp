@@ -1,4 +1,4 @@
-// Test data of PCCD (ALGORITHMS.md section 8): analytic shapes, triangle-mesh sampling,
+// Test data of PCCD (doc/manual/sampling.md): analytic shapes, triangle-mesh sampling,
 // normalization, rigid transforms and benchmark poses, each against an independent truth
 // (analytic formulas, brute force over dense parametric grids, chi-square / Kolmogorov-Smirnov
 // tests with fixed seeds).
@@ -12,7 +12,7 @@
 #include <PCCD/Sampling/Plane_patch_shape.h>
 #include <PCCD/Sampling/Sphere_shape.h>
 #include <PCCD/Sampling/Torus_shape.h>
-#include <PCCD/Sampling/normalize.h>
+#include <PCCD/Sampling/Similarity_3.h>
 #include <PCCD/Sampling/pose_generator.h>
 #include <PCCD/Sampling/sample_triangle_mesh.h>
 

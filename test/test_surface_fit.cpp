@@ -8,6 +8,8 @@
 #include <PCCD/Surface/Surface_fit.h>
 #include <PCCD/Surface/WLS_surface.h>
 
+#include <common/statistics.h>
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -37,11 +39,7 @@ PCCD::internal::Sphere_sums sphere_sums(const Eigen::Vector3d& centre, double ra
     return sums;
 }
 
-double median(std::vector<double> v)
-{
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
+using pccd_bench::upper_median;
 
 } // namespace
 
@@ -122,7 +120,7 @@ TEST_CASE("WLS_surface with the sphere fit is the signed distance of a sampled s
     }
     CHECK(defined > 450);
     // The plane's zero set is shrunk: f - d > 0 (x is outside its plane) by a visible amount.
-    CHECK(median(plane_at_surface) > 1e-3);
+    CHECK(upper_median(plane_at_surface) > 1e-3);
 }
 
 TEST_CASE("on noisy curved samples the sphere fit's zero set is closer to the surface", "[surface]")
@@ -154,7 +152,7 @@ TEST_CASE("on noisy curved samples the sphere fit's zero set is closer to the su
             }
             REQUIRE(errors[0].size() > 350);
             REQUIRE(errors[1].size() > 350);
-            const double plane = median(errors[0]), sphere = median(errors[1]);
+            const double plane = upper_median(errors[0]), sphere = upper_median(errors[1]);
             INFO(name << ": median distance of the zero set, plane " << plane << ", sphere " << sphere << " spacings");
             CHECK(sphere <= 0.8 * plane);
         };

@@ -1,5 +1,5 @@
 // pccd bench FILE [--method isearch|rst] [--distances 0:3:0.25] [--rotations R] [--seed S]
-//   [--points N] [--csv OUT]: the benchmark procedure of ALGORITHMS.md section 8 on one object:
+//   [--points N] [--csv OUT]: the benchmark procedure of doc/manual/sampling.md on one object:
 // two copies of it, normalized into [-1, 1]^3, A at [R_A | 0] and B at [R_B | (d, 0, 0)] for every
 // distance d and R random rotation pairs; one first-hit query (do_intersect) per pose, single
 // thread, timed with steady_clock; per distance: poses, colliding poses, mean and median time,
@@ -11,6 +11,8 @@
 #include <PCCD/Random.h>
 #include <PCCD/Sampling/pose_generator.h>
 #include <PCCD/Sampling/sample_triangle_mesh.h>
+
+#include <common/statistics.h>
 
 #include <algorithm>
 #include <cmath>
@@ -105,15 +107,8 @@ Object_points load_bench_points(const Bench_options& o, std::string& description
     return result;
 }
 
-double mean(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / double(v.size()); }
-
-double median(std::vector<double> v)
-{
-    const std::size_t m = v.size() / 2;
-    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(m), v.end());
-    if (v.size() % 2 == 1) return v[m];
-    return 0.5 * (v[m] + *std::max_element(v.begin(), v.begin() + std::ptrdiff_t(m)));
-}
+using pccd_bench::mean;
+using pccd_bench::median;
 
 void run_bench(const Bench_options& o)
 {

@@ -10,6 +10,8 @@
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Sampling/pose_generator.h>
 
+#include <common/timing.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -20,12 +22,8 @@
 namespace pccd_tool {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point start)
-{
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
+using pccd_bench::Clock;
+using pccd_bench::ms_since;
 
 struct Demo_options {
     std::size_t points = 30000;

@@ -9,6 +9,9 @@
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Proximity_graph/graph_components.h>
 
+#include <common/statistics.h>
+#include <common/timing.h>
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -22,22 +25,12 @@
 namespace pccd_tool {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point start)
-{
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
+using pccd_bench::Clock;
+using pccd_bench::ms_since;
 
 nlohmann::json vector_json(const Eigen::Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
 
-double median_of(const Eigen::VectorXd& v)
-{
-    std::vector<double> values(v.data(), v.data() + v.size());
-    const auto middle = values.begin() + std::ptrdiff_t(values.size() / 2);
-    std::nth_element(values.begin(), middle, values.end());
-    return *middle;
-}
+double median_of(const Eigen::VectorXd& v) { return pccd_bench::upper_median({v.data(), v.data() + v.size()}); }
 
 nlohmann::json describe_file(const std::string& path)
 {

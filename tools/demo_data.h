@@ -1,12 +1,12 @@
 // tools/demo_data.h -- the built-in data of the pccd tool: the scanned Stanford bunny of Debian's
 // libcgal-demo package when it is available, otherwise PCCD's procedural torus (the embedded
-// default). Both are normalized into [-1, 1]^3 (ALGORITHMS.md section 8) and sampled by area.
+// default). Both are normalized into [-1, 1]^3 (doc/manual/sampling.md) and sampled by area.
 #pragma once
 
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Random.h>
 #include <PCCD/Sampling/Torus_shape.h>
-#include <PCCD/Sampling/normalize.h>
+#include <PCCD/Sampling/Similarity_3.h>
 #include <PCCD/Sampling/sample_triangle_mesh.h>
 
 #include <cstdint>

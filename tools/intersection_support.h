@@ -1,14 +1,17 @@
 // tools/intersection_support.h -- what `pccd collide` and `pccd bench` share: reading an object
-// from a file (optionally normalized into [-1, 1]^3, ALGORITHMS.md section 8) and preprocessing
-// it, choosing the leaf intersector by name (sections 5 and 6), running one timed query, and the
-// query's counters as JSON and CSV.
+// from a file (optionally normalized into [-1, 1]^3, doc/manual/sampling.md) and preprocessing it,
+// choosing the leaf intersector by name (doc/manual/intersection.md, the leaf intersector
+// policies), running one timed query, and the query's counters as JSON and CSV. It implements the
+// command line of doc/manual/cli_collide.md.
 #pragma once
 
 #include <PCCD/Error.h>
 #include <PCCD/IO/read_points.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/normalize.h>
+#include <PCCD/Sampling/Similarity_3.h>
+
+#include <common/timing.h>
 
 #include <nlohmann/json.hpp>
 
@@ -20,12 +23,9 @@
 
 namespace pccd_tool {
 
-using Clock = std::chrono::steady_clock;
-
-inline double ms_since(Clock::time_point start)
-{
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
+using pccd_bench::Clock;
+using pccd_bench::ms_since;
+using pccd_bench::us_since;
 
 /// The methods of the --method option: the two leaf intersector policies, by their name().
 inline const std::vector<std::string>& method_names()
@@ -90,7 +90,7 @@ inline Timed_result run_timed_query(const PCCD::Point_cloud_object<>& a, const P
         const Clock::time_point start = Clock::now();
         PCCD::Intersection_result result = first_hit ? PCCD::do_intersect(a, pose_a, b, pose_b, options, policy)
                                                      : PCCD::intersection_points(a, pose_a, b, pose_b, options, policy);
-        const double us = std::chrono::duration<double, std::micro>(Clock::now() - start).count();
+        const double us = us_since(start);
         return Timed_result{std::move(result), us};
     };
     if (method == PCCD::Randomized_sampling::name()) return query(PCCD::Randomized_sampling{});

@@ -18,7 +18,8 @@
 
 #include <PCCD/Error.h>
 #include <PCCD/Geodesic/Close_pairs_shortest_paths.h>
-#include <PCCD/Geodesic/shortest_path_on_the_fly.h>
+#include <PCCD/Geodesic/Paths_on_the_fly.h>
+#include <PCCD/Geodesic/Stored_paths.h>
 #include <PCCD/Intersection/Intersection_options.h>
 #include <PCCD/Intersection/Intersection_result.h>
 #include <PCCD/Intersection/internal/Query_state.h>

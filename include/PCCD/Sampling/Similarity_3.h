@@ -1,5 +1,5 @@
-// PCCD/Sampling/normalize.h -- the object normalization of the benchmark procedure (ALGORITHMS.md
-// section 8): translate the bounding-box centre to the origin, then scale uniformly by
+// PCCD/Sampling/Similarity_3.h -- Similarity_3 and the object normalization of the benchmark
+// procedure (doc/manual/sampling.md, "Normalization"): translate the bounding-box centre to the origin, then scale uniformly by
 // 2 / (longest bounding-box side), so that the object fits [-1, 1]^3 and touches two opposite faces.
 // The applied similarity is returned, so that a mesh and the cloud sampled from it can be
 // normalized identically.
@@ -106,7 +106,7 @@ private:
 
 } // namespace internal
 
-/// The normalization of ALGORITHMS.md section 8 for the points in the columns of a 3 x N matrix:
+/// The normalization of doc/manual/sampling.md for the points in the columns of a 3 x N matrix:
 /// centre = bounding-box centre, scale = 2 / longest bounding-box side.
 /// \throws Invalid_input if there is no point, a coordinate is not finite (the message names the
 ///         point), or all points coincide (zero extent). Complexity: O(N).

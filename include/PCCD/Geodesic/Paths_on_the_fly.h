@@ -1,6 +1,6 @@
-// PCCD/Geodesic/shortest_path_on_the_fly.h -- shortest paths computed at query time instead of
-// stored (ALGORITHMS.md section 2, WSCG05 Algorithm 2): the Paths_on_the_fly path policy, which
-// keeps nothing beyond the graph and the point coordinates.
+// PCCD/Geodesic/Paths_on_the_fly.h -- shortest paths computed at query time instead of stored
+// (doc/manual/graphs.md, "Paths without storage"; WSCG05 Algorithm 2): the Paths_on_the_fly path
+// policy, which keeps nothing beyond the graph and the point coordinates.
 //
 // WSCG05's Algorithm 2 is a best-first search from p1 whose priority is the geodesic distance to
 // p2, read from a CPSP map that stores distances. PCCD's version needs no stored distance at all:
