@@ -10,6 +10,7 @@
 #include <PCCD/IO/internal/text_scanner.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -49,23 +50,73 @@ inline void check_off_color(const std::string& path, const char* what, std::uint
     }
 }
 
-/// Checks an ascii OFF file: keyword (OFF, NOFF, COFF, CNOFF), counts, one vertex per line with
-/// finite numbers, one face per line with at least 3 in-range vertex indices, nothing after.
-inline Off_summary check_off(const std::string& path, std::string_view text)
+/// In COFF, either every vertex (face) has a color or none has: the first one decides.
+class Off_color_presence {
+public:
+    explicit Off_color_presence(const char* what) : m_what(what) {}
+
+    /// Records whether item `index` (on line `line`) has a color; throws if the first one differs.
+    void check(const std::string& path, std::uint64_t index, std::size_t line, bool colored)
+    {
+        if (!m_known) {
+            m_known = true;
+            m_colored = colored;
+            m_first = index;
+            m_first_line = line;
+        } else if (colored != m_colored) {
+            fail(path, concat("inconsistent colors: ", m_what, ' ', m_first, " (line ", m_first_line, ") has ",
+                              m_colored ? "a color" : "no color", " but ", m_what, ' ', index, " (line ", line,
+                              ") has ", colored ? "one" : "none"));
+        }
+    }
+
+private:
+    const char* m_what;
+    bool m_known = false, m_colored = false;
+    std::uint64_t m_first = 0;
+    std::size_t m_first_line = 0;
+};
+
+/// Checks the keyword `token` (on line `line`) of an OFF header: OFF, NOFF, COFF or CNOFF (any
+/// other keyword of the family CGAL knows is unsupported). Sets `summary.colors` and `.normals`.
+inline void check_off_keyword(const std::string& path, std::string_view token, std::size_t line, Off_summary& summary)
 {
-    if (is_blank_text(text)) fail(path, "the file is empty (it holds only whitespace)");
-    Off_summary summary;
-    Line_cursor lines(text);
+    std::string_view k = token;
+    const bool textures = k.starts_with("ST");
+    if (textures) k.remove_prefix(2);
+    bool flags[4] = {};
+    const char prefixes[4] = {'C', 'N', '4', 'n'};
+    for (int p = 0; p < 4; ++p)
+        if (!k.empty() && k.front() == prefixes[p]) {
+            flags[p] = true;
+            k.remove_prefix(1);
+        }
+    if (k != "OFF" && k != "SKEL")
+        fail(path, concat("bad header: line ", line, " starts with ", quote_token(token), ", expected the keyword OFF",
+                          looks_like(token)));
+    if (textures || flags[2] || flags[3] || k == "SKEL")
+        fail(path, concat("unsupported OFF variant ", quote_token(token), " on line ", line,
+                          ": PCCD reads OFF, NOFF, COFF and CNOFF"));
+    summary.colors = flags[0];
+    summary.normals = flags[1];
+}
+
+/// A token of an OFF header and its line.
+struct Off_header_token {
+    std::string_view text;
+    std::size_t line;
+};
+
+/// Reads the header of an OFF file, `lines` from its start: the keyword and three counts, possibly
+/// over several lines, comments allowed where CGAL's header scanner skips them. Sets `keyword`,
+/// `summary.colors` and `.normals`. \returns the keyword and the counts as found (fewer than 4
+/// tokens when the text ends before).
+inline std::vector<Off_header_token> read_off_header(const std::string& path, Line_cursor& lines, std::string& keyword,
+                                                     Off_summary& summary)
+{
+    std::vector<Off_header_token> header;
     std::string_view line;
     std::vector<std::string_view> tokens;
-
-    // The header: the keyword and three counts, possibly over several lines, comments allowed.
-    struct Header_token {
-        std::string_view text;
-        std::size_t line;
-    };
-    std::vector<Header_token> header;
-    std::string keyword;
     while (header.size() < 4 && lines.next(line)) {
         const std::string_view content = strip_comment(line);
         split(content, tokens);
@@ -75,24 +126,7 @@ inline Off_summary check_off(const std::string& path, std::string_view text)
             header.push_back({token, lines.line()});
             if (header.size() == 1) {
                 keyword = std::string(token);
-                std::string_view k = token;
-                const bool textures = k.starts_with("ST");
-                if (textures) k.remove_prefix(2);
-                bool flags[4] = {};
-                const char prefixes[4] = {'C', 'N', '4', 'n'};
-                for (int p = 0; p < 4; ++p)
-                    if (!k.empty() && k.front() == prefixes[p]) {
-                        flags[p] = true;
-                        k.remove_prefix(1);
-                    }
-                if (k != "OFF" && k != "SKEL")
-                    fail(path, concat("bad header: line ", lines.line(), " starts with ", quote_token(token),
-                                      ", expected the keyword OFF", looks_like(token)));
-                if (textures || flags[2] || flags[3] || k == "SKEL")
-                    fail(path, concat("unsupported OFF variant ", quote_token(token), " on line ", lines.line(),
-                                      ": PCCD reads OFF, NOFF, COFF and CNOFF"));
-                summary.colors = flags[0];
-                summary.normals = flags[1];
+                check_off_keyword(path, token, lines.line(), summary);
             } else if (header.size() == 2 && token == "BINARY") {
                 fail(path, "unsupported OFF variant: binary OFF (PCCD reads ascii OFF only)");
             }
@@ -108,15 +142,22 @@ inline Off_summary check_off(const std::string& path, std::string_view text)
                                   " (the three counts must follow each other)"));
         }
     }
+    return header;
+}
+
+/// The vertex, face and edge counts of a complete OFF header (keyword and counts), checked: digits
+/// only, as CGAL reads them, non-negative, at most INT_MAX.
+inline std::array<std::uint64_t, 3> off_counts(const std::string& path, const std::vector<Off_header_token>& header)
+{
     static constexpr const char* count_names[3] = {"vertex", "face", "edge"};
     if (header.empty()) fail(path, "the file is empty (it holds only comments)");
     if (header.size() < 4)
         fail(path, concat("bad header: the ", count_names[header.size() - 1], " count is missing after ",
                           quote_token(header.back().text), " (line ", header.back().line,
                           "); an OFF header is the keyword followed by the vertex, face and edge counts"));
-    std::uint64_t counts[3];
+    std::array<std::uint64_t, 3> counts{};
     for (int c = 0; c < 3; ++c) {
-        const Header_token& h = header[static_cast<std::size_t>(c) + 1];
+        const Off_header_token& h = header[static_cast<std::size_t>(c) + 1];
         std::int64_t value = 0;
         // CGAL reads the counts as int and takes only digits for the vertex count.
         const bool digits = std::all_of(h.text.begin() + (h.text.front() == '-' ? 1 : 0), h.text.end(),
@@ -130,13 +171,16 @@ inline Off_summary check_off(const std::string& path, std::string_view text)
                               " is too large"));
         if (value < 0)
             fail(path, concat("bad header: negative ", count_names[c], " count ", value, " on line ", h.line));
-        counts[c] = static_cast<std::uint64_t>(value);
+        counts[static_cast<std::size_t>(c)] = static_cast<std::uint64_t>(value);
     }
-    const std::uint64_t nv = counts[0], nf = counts[1];
-    if (nv == 0) fail(path, "no points: the header declares 0 vertices");
+    return counts;
+}
 
-    // Records are one per line: count the lines of data first, for a clear truncation message.
-    const Line_cursor data_start = lines;
+/// Records are one per line: counts the lines of data after the header (a copy of `lines`) and
+/// throws, with a clear message, unless there are exactly `nv` + `nf`.
+inline void check_off_line_count(const std::string& path, Line_cursor lines, std::uint64_t nv, std::uint64_t nf)
+{
+    std::string_view line;
     std::uint64_t data_lines = 0;
     std::size_t first_extra_line = 0;
     while (lines.next_content(line, true))
@@ -147,24 +191,16 @@ inline Off_summary check_off(const std::string& path, std::string_view text)
     if (data_lines > nv + nf)
         fail(path, concat("unexpected data on line ", first_extra_line, " after the last ", nf > 0 ? "face" : "vertex",
                           ": the header declares ", nv, " vertices and ", nf, " faces"));
+}
 
-    lines = data_start;
-    // In COFF, either every vertex (face) has a color or none has: the first one decides.
-    struct Colors {
-        bool known = false, colored = false;
-        std::uint64_t first = 0;
-        std::size_t first_line = 0;
-    } vertex_colors, face_colors;
-    const auto check_colors = [&](const char* what, std::uint64_t index, std::size_t line, bool colored,
-                                  Colors& state) {
-        if (!state.known) {
-            state = {true, colored, index, line};
-        } else if (colored != state.colored) {
-            fail(path, concat("inconsistent colors: ", what, ' ', state.first, " (line ", state.first_line, ") has ",
-                              state.colored ? "a color" : "no color", " but ", what, ' ', index, " (line ", line,
-                              ") has ", colored ? "one" : "none"));
-        }
-    };
+/// Checks the `nv` vertex lines that follow the header (`lines`): x y z, nx ny nz after a NOFF
+/// keyword (`keyword`, for messages), a color of 1, 3 or 4 numbers in COFF, all finite.
+inline void check_off_vertices(const std::string& path, Line_cursor& lines, const Off_summary& summary,
+                               const std::string& keyword, std::uint64_t nv)
+{
+    std::string_view line;
+    std::vector<std::string_view> tokens;
+    Off_color_presence colors("vertex");
     const std::size_t base = summary.normals ? 6 : 3;
     const char* const expected = summary.normals ? "6 (x y z nx ny nz)" : "3 (x y z)";
     for (std::uint64_t i = 0; i < nv; ++i) {
@@ -196,9 +232,19 @@ inline Off_summary check_off(const std::string& path, std::string_view text)
         check_finite(path, values, "vertex", i, at, "coordinate");
         if (summary.normals) check_finite(path, values + 3, "vertex", i, at, "normal");
         // CGAL reads past the numbers of a line without color once a vertex had one.
-        if (summary.colors) check_colors("vertex", i, at, extra != 0, vertex_colors);
+        if (summary.colors) colors.check(path, i, at, extra != 0);
         if (summary.colors) check_off_color(path, "vertex", i, at, values + base, extra);
     }
+}
+
+/// Checks the `nf` face lines that follow the vertices (`lines`): a vertex count of at least 3, as
+/// many indices in [0, nv), then an optional color of 1, 3 or 4 numbers (checked in COFF).
+inline void check_off_faces(const std::string& path, Line_cursor& lines, const Off_summary& summary,
+                            std::uint64_t nv, std::uint64_t nf)
+{
+    std::string_view line;
+    std::vector<std::string_view> tokens;
+    Off_color_presence colors("face");
     for (std::uint64_t f = 0; f < nf; ++f) {
         lines.next_content(line, true);
         split(strip_comment(line), tokens);
@@ -225,7 +271,7 @@ inline Off_summary check_off(const std::string& path, std::string_view text)
         if (extra != 0 && extra != 1 && extra != 3 && extra != 4)
             fail(path, concat("malformed face on line ", at, ": face ", f, " has ", extra, " values after its ", size,
                               " vertex indices (a face color has 1, 3 or 4)"));
-        if (summary.colors) check_colors("face", f, at, extra != 0, face_colors);
+        if (summary.colors) colors.check(path, f, at, extra != 0);
         double color[4] = {};
         for (std::size_t t = 1 + static_cast<std::size_t>(size), c = 0; t < tokens.size(); ++t, ++c) {
             if (parse_double(tokens[t], color[c]) != Number::ok || !is_finite(color[c]))
@@ -233,6 +279,23 @@ inline Off_summary check_off(const std::string& path, std::string_view text)
         }
         if (summary.colors) check_off_color(path, "face", f, at, color, extra);
     }
+}
+
+/// Checks an ascii OFF file: keyword (OFF, NOFF, COFF, CNOFF), counts, one vertex per line with
+/// finite numbers, one face per line with at least 3 in-range vertex indices, nothing after.
+inline Off_summary check_off(const std::string& path, std::string_view text)
+{
+    if (is_blank_text(text)) fail(path, "the file is empty (it holds only whitespace)");
+    Off_summary summary;
+    Line_cursor lines(text);
+    std::string keyword;
+    const std::vector<Off_header_token> header = read_off_header(path, lines, keyword, summary);
+    const std::array<std::uint64_t, 3> counts = off_counts(path, header);
+    const std::uint64_t nv = counts[0], nf = counts[1];
+    if (nv == 0) fail(path, "no points: the header declares 0 vertices");
+    check_off_line_count(path, lines, nv, nf);
+    check_off_vertices(path, lines, summary, keyword, nv);
+    check_off_faces(path, lines, summary, nv, nf);
     summary.vertices = static_cast<std::size_t>(nv);
     summary.faces = static_cast<std::size_t>(nf);
     return summary;
