@@ -1,8 +1,9 @@
-// PCCD/Point_cloud_object.h -- the whole preprocessed state of one point cloud (DESIGN.md, "Object"):
-// points and kd-tree, proximity graph, sampling radius, CPSP map, oriented normals and the kernel
-// bandwidth of the implicit surface (ALGORITHMS.md sections 1-3), built in one call, saved to and
-// loaded from one binary file, with the time each preprocessing stage took. Later stages (the
-// hierarchy of section 4) attach to it.
+// PCCD/Point_cloud_object.h -- the whole preprocessed state of one point cloud: points and kd-tree,
+// proximity graph, sampling radius, CPSP map, oriented normals and the kernel bandwidth of the
+// implicit surface, built in one call, saved to and loaded from one binary file (little-endian,
+// through PCCD/internal/binary_stream.h), with the time each preprocessing stage took; the point
+// cloud hierarchy of the intersection queries attaches to it. Implements doc/manual/surface.md,
+// "One call: Point_cloud_object" (and its save and load).
 #pragma once
 
 #include <algorithm>
@@ -48,6 +49,7 @@
 #include <PCCD/Surface/surface_domain.h>
 #include <PCCD/concepts/PointCloudKernel.h>
 #include <PCCD/concepts/ReadablePointMap.h>
+#include <PCCD/internal/binary_stream.h>
 #include <PCCD/sampling_radius.h>
 
 namespace PCCD {
@@ -211,7 +213,7 @@ public:
     const Point_cloud<K>& cloud() const { return m_data->cloud; }
     std::size_t size() const { return m_data->cloud.size(); }
     const Proximity_graph& graph() const { return *m_data->graph; }
-    /// The bounding-volume hierarchy over the points (ALGORITHMS.md section 4).
+    /// The bounding-volume hierarchy over the points (doc/manual/intersection.md).
     const Point_cloud_hierarchy& hierarchy() const { return m_data->hierarchy; }
     const Close_pairs_shortest_paths& cpsp() const { return *m_data->cpsp; }
     /// r(P).
@@ -446,54 +448,6 @@ namespace internal {
 
 inline constexpr char object_magic[8] = {'P', 'C', 'C', 'D', 'O', 'B', 'J', '\0'};
 
-/// Appends raw bytes of trivially copyable values to a buffer.
-class Byte_writer {
-public:
-    template <class T>
-    void put(const T& value)
-    {
-        write(&value, sizeof value);
-    }
-    void write(const void* data, std::size_t size)
-    {
-        if (size == 0) return;
-        const auto* bytes = static_cast<const char*>(data);
-        m_bytes.insert(m_bytes.end(), bytes, bytes + size);
-    }
-    const std::string& bytes() const { return m_bytes; }
-
-private:
-    std::string m_bytes;
-};
-
-/// Reads raw bytes from a buffer, failing with File_error past its end.
-class Byte_reader {
-public:
-    Byte_reader(const std::string& path, const std::string& bytes) : m_path(path), m_bytes(bytes) {}
-    template <class T>
-    T get()
-    {
-        T value;
-        read(&value, sizeof value);
-        return value;
-    }
-    void read(void* data, std::size_t size)
-    {
-        if (m_bytes.size() - m_position < size) fail("truncated file");
-        if (size == 0) return; // an empty array's data() may be null, which memcpy must not see
-        std::memcpy(data, m_bytes.data() + m_position, size);
-        m_position += size;
-    }
-    std::size_t remaining() const { return m_bytes.size() - m_position; }
-    std::size_t position() const { return m_position; }
-    [[noreturn]] void fail(const std::string& problem) const { throw File_error(m_path, problem); }
-
-private:
-    std::string m_path;
-    const std::string& m_bytes;
-    std::size_t m_position = 0;
-};
-
 /// A read-only stream buffer over bytes held elsewhere, without copying them (the geodesic section
 /// of a loaded object file, read in place).
 class Span_streambuf : public std::streambuf {
@@ -514,7 +468,7 @@ inline std::string read_binary_file(const std::string& path)
 
 } // namespace internal
 
-// File format (version 3, native byte order checked by a mark, no padding):
+// File format (version 3, little-endian whatever the host, with a byte-order mark, no padding):
 //   magic "PCCDOBJ\0" | u32 version | u32 byte-order mark | u64 N | f64 sampling radius
 //   f64 bandwidth h | f64 theta_eps | u8 normals given | u64 flipped, components, unoriented
 //   f64 timings[5] | f64 points[3N] | f64 normals[3N]
@@ -533,7 +487,7 @@ void Point_cloud_object<K>::save(const std::string& path) const
     internal::write_geodesic_stream(geodesic_stream, path, *d.graph, *d.cpsp);
     const std::string geodesic = std::move(geodesic_stream).str();
 
-    internal::Byte_writer out;
+    internal::Binary_writer out;
     out.write(internal::object_magic, sizeof internal::object_magic);
     out.put(file_version);
     out.put(internal::byte_order_mark);
@@ -559,9 +513,7 @@ void Point_cloud_object<K>::save(const std::string& path) const
     out.put(std::uint8_t(surface().fit()));
     out.put(std::uint64_t(geodesic.size()));
     out.write(geodesic.data(), geodesic.size());
-    internal::Word_checksum checksum;
-    checksum.update(out.bytes().data(), out.bytes().size());
-    out.put(checksum.value());
+    out.finish();
 
     std::ofstream file(path, std::ios::binary | std::ios::trunc);
     if (!file) throw File_error(path, "cannot open the file for writing");
@@ -575,7 +527,7 @@ Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path,
                                                  const Point_cloud_hierarchy_options& hierarchy)
 {
     const std::string bytes = internal::read_binary_file(path);
-    internal::Byte_reader in(path, bytes);
+    internal::Binary_reader in(bytes, path);
     char magic[8];
     in.read(magic, sizeof magic);
     if (std::memcmp(magic, internal::object_magic, sizeof magic) != 0) in.fail("not a PCCD object file");
@@ -588,8 +540,8 @@ Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path,
     {
         internal::Word_checksum checksum;
         checksum.update(bytes.data(), bytes.size() - sizeof(std::uint64_t));
-        std::uint64_t stored;
-        std::memcpy(&stored, bytes.data() + bytes.size() - sizeof stored, sizeof stored);
+        const auto stored =
+            internal::decode_little_endian<std::uint64_t>(bytes.data() + bytes.size() - sizeof(std::uint64_t));
         if (stored != checksum.value()) in.fail("checksum mismatch: the file is truncated or corrupted");
     }
     const auto n = in.get<std::uint64_t>();

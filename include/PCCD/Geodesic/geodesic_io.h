@@ -1,14 +1,15 @@
 // PCCD/Geodesic/geodesic_io.h -- saving and loading the preprocessed geodesic data of a cloud (its
-// proximity graph and CPSP map, ALGORITHMS.md section 2) in one binary file, so that the O(N log N)
-// preprocessing is paid once (DESIGN.md: preprocessing "can be saved and loaded").
+// proximity graph and CPSP map) in one binary file, so that the O(N log N) preprocessing is paid
+// once. Implements doc/manual/graphs.md, "Saving and loading"; the bytes go through the binary
+// reader and writer of PCCD/internal/binary_stream.h.
 //
-// Format (version 1, little-endian, every field at its natural size, no padding):
+// Format (version 1, little-endian whatever the host, every field at its natural size, no padding):
 //   magic "PCCDGEO\0" | u32 version | u32 byte-order mark 0x01020304
 //   u8 graph kind | u32 graph parameter | u64 N | u64 E (stored edge directions)
 //   f64 sampling radius | f64 support eta | u64 M (CPSP entries)
 //   u64 row offsets[N + 1] | u32 targets[E] | f32 lengths[E] | u8 virtual flags[E]
 //   u64 CPSP offsets[N + 1] | u32 CPSP targets[M] | f32 CPSP distances[M] | u32 CPSP predecessors[M]
-//   u64 checksum (FNV-1a over 64-bit words of everything before it, zero-padded tail)
+//   u64 checksum (FNV-1a over the little-endian 64-bit words of everything before it, zero-padded tail)
 // The reader checks the magic, version, byte order, exact file size, checksum and the structure
 // (offsets, index ranges, symmetric graph, sorted lists), so a file from another version, a
 // truncated or corrupted file is a File_error, never undefined behaviour.
@@ -31,6 +32,7 @@
 #include <PCCD/Error.h>
 #include <PCCD/Geodesic/Close_pairs_shortest_paths.h>
 #include <PCCD/Proximity_graph/Proximity_graph.h>
+#include <PCCD/internal/binary_stream.h>
 
 namespace PCCD {
 
@@ -47,120 +49,6 @@ namespace internal {
 
 inline constexpr char geodesic_magic[8] = {'P', 'C', 'C', 'D', 'G', 'E', 'O', '\0'};
 inline constexpr std::uint32_t byte_order_mark = 0x01020304;
-
-/// FNV-1a over 64-bit words (fast enough for gigabyte files); the tail is zero-padded.
-class Word_checksum {
-public:
-    void update(const void* data, std::size_t size)
-    {
-        const auto* bytes = static_cast<const unsigned char*>(data);
-        while (size > 0) {
-            const std::size_t take = std::min<std::size_t>(size, 8 - m_fill);
-            std::memcpy(m_buffer + m_fill, bytes, take);
-            m_fill += take;
-            bytes += take;
-            size -= take;
-            if (m_fill == 8) flush();
-        }
-    }
-    std::uint64_t value()
-    {
-        if (m_fill > 0) {
-            std::memset(m_buffer + m_fill, 0, 8 - m_fill);
-            flush();
-        }
-        return m_hash;
-    }
-
-private:
-    void flush()
-    {
-        std::uint64_t word;
-        std::memcpy(&word, m_buffer, 8);
-        m_hash = (m_hash ^ word) * 0x100000001b3ull;
-        m_fill = 0;
-    }
-    std::uint64_t m_hash = 0xcbf29ce484222325ull;
-    unsigned char m_buffer[8] = {};
-    std::size_t m_fill = 0;
-};
-
-/// Writes the geodesic format to a stream; `file` names it in error messages.
-class Geodesic_writer {
-public:
-    Geodesic_writer(std::ostream& out, std::string file) : m_file(std::move(file)), m_out(out) {}
-    template <class T>
-    void put(const T& value)
-    {
-        write(&value, sizeof(T));
-    }
-    template <class T>
-    void put(const std::vector<T>& values)
-    {
-        write(values.data(), values.size() * sizeof(T));
-    }
-    void write(const void* data, std::size_t size)
-    {
-        m_checksum.update(data, size);
-        m_out.write(static_cast<const char*>(data), std::streamsize(size));
-        if (!m_out) throw File_error(m_file, "write failed (disk full?)");
-    }
-    void finish()
-    {
-        const std::uint64_t sum = m_checksum.value();
-        m_out.write(reinterpret_cast<const char*>(&sum), sizeof sum);
-        m_out.flush();
-        if (!m_out) throw File_error(m_file, "write failed (disk full?)");
-    }
-
-private:
-    std::string m_file;
-    std::ostream& m_out;
-    Word_checksum m_checksum;
-};
-
-/// Reads the geodesic format from a stream; errors are File_error(file, prefix + problem).
-class Geodesic_reader {
-public:
-    Geodesic_reader(std::istream& in, std::string file, std::string prefix)
-        : m_file(std::move(file)), m_prefix(std::move(prefix)), m_in(in)
-    {
-    }
-    template <class T>
-    T get()
-    {
-        T value;
-        read(&value, sizeof(T));
-        return value;
-    }
-    template <class T>
-    std::vector<T> get_vector(std::uint64_t count)
-    {
-        std::vector<T> values(count);
-        read(values.data(), count * sizeof(T));
-        return values;
-    }
-    void read(void* data, std::size_t size)
-    {
-        m_in.read(static_cast<char*>(data), std::streamsize(size));
-        if (std::size_t(m_in.gcount()) != size) fail("truncated file");
-        m_checksum.update(data, size);
-    }
-    void check_sum()
-    {
-        const std::uint64_t expected = m_checksum.value();
-        std::uint64_t stored;
-        m_in.read(reinterpret_cast<char*>(&stored), sizeof stored);
-        if (std::size_t(m_in.gcount()) != sizeof stored) fail("truncated file");
-        if (stored != expected) fail("checksum mismatch: the file is corrupted");
-    }
-    [[noreturn]] void fail(const std::string& problem) const { throw File_error(m_file, m_prefix + problem); }
-
-private:
-    std::string m_file, m_prefix;
-    std::istream& m_in;
-    Word_checksum m_checksum;
-};
 
 inline std::uint64_t geodesic_file_size(std::uint64_t n, std::uint64_t e, std::uint64_t m)
 {
@@ -185,7 +73,7 @@ inline void write_geodesic_stream(std::ostream& stream, const std::string& file,
                                   const Close_pairs_shortest_paths& cpsp)
 {
     check_same_points(graph, cpsp);
-    internal::Geodesic_writer out(stream, file);
+    internal::Binary_writer out(stream, file);
     out.write(internal::geodesic_magic, sizeof internal::geodesic_magic);
     out.put(geodesic_file_version);
     out.put(internal::byte_order_mark);
@@ -239,7 +127,7 @@ namespace internal {
 inline Geodesic_data read_geodesic_stream(std::istream& stream, std::uint64_t file_size, const std::string& file,
                                           const std::string& prefix)
 {
-    internal::Geodesic_reader in(stream, file, prefix);
+    internal::Binary_reader in(stream, file_size, file, prefix);
     char magic[8];
     if (file_size < sizeof magic) in.fail("truncated file: not a PCCD geodesic file");
     in.read(magic, sizeof magic);
@@ -323,7 +211,8 @@ inline Geodesic_data read_geodesic_stream(std::istream& stream, std::uint64_t fi
 
 /// Reads a file written by write_geodesic_data(). The result equals what was written, bit for bit.
 /// \throws File_error naming the file and the problem if it cannot be read, is not a PCCD geodesic
-///         file, was written by another format version or on a machine of other byte order, is
+///         file, was written by another format version or carries another byte-order mark (as the
+///         files of older versions of PCCD written on a big-endian machine do), is
 ///         truncated or longer than its header says, fails its checksum, or holds an inconsistent
 ///         graph or CPSP map.
 /// Complexity: O(size of the data).

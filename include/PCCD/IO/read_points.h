@@ -1,13 +1,17 @@
 // PCCD/IO/read_points.h -- reads a point cloud (points and, if present, normals) from a PLY, OFF or
-// XYZ/PWN file through CGAL's readers, after PCCD's own checks of the file (see
-// PCCD/IO/internal/File_checks.h), so that every unusable file throws PCCD::File_error naming
-// the problem.
+// XYZ/PWN file through CGAL's readers, after PCCD's own check of the format (PCCD/IO/internal/
+// check_ply.h, check_off.h, check_xyz.h), so that every unusable file throws PCCD::File_error
+// naming the problem. Implements the reading of points of doc/manual/io.md (format table,
+// "Functions", "Normals are read as stored", "Meshes as points", "Errors").
 #pragma once
 
 #include <PCCD/Error.h>
 #include <PCCD/IO/Format.h>
 #include <PCCD/IO/Point_data.h>
-#include <PCCD/IO/internal/File_checks.h>
+#include <PCCD/IO/internal/check_off.h>
+#include <PCCD/IO/internal/check_ply.h>
+#include <PCCD/IO/internal/check_xyz.h>
+#include <PCCD/IO/internal/read_helpers.h>
 
 #include <CGAL/IO/OFF.h>
 #include <CGAL/IO/read_ply_points.h>

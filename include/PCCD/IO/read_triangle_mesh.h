@@ -1,13 +1,16 @@
 // PCCD/IO/read_triangle_mesh.h -- reads a triangle mesh (vertices and index triples) from an OFF or
-// PLY file through CGAL's polygon soup readers, after PCCD's own checks of the file (see
-// PCCD/IO/internal/File_checks.h), so that every unusable file throws PCCD::File_error naming
-// the problem.
+// PLY file through CGAL's polygon soup readers, after PCCD's own check of the format (PCCD/IO/
+// internal/check_off.h, check_ply.h), so that every unusable file throws PCCD::File_error naming
+// the problem. Implements the reading of meshes of doc/manual/io.md ("Functions", "Polygons",
+// "Errors").
 #pragma once
 
 #include <PCCD/Error.h>
 #include <PCCD/IO/Format.h>
 #include <PCCD/IO/Triangle_mesh_data.h>
-#include <PCCD/IO/internal/File_checks.h>
+#include <PCCD/IO/internal/check_off.h>
+#include <PCCD/IO/internal/check_ply.h>
+#include <PCCD/IO/internal/read_helpers.h>
 
 #include <CGAL/IO/OFF.h>
 #include <CGAL/IO/PLY.h>

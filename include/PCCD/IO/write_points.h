@@ -1,12 +1,14 @@
 // PCCD/IO/write_points.h -- writes a point cloud (points and, if present, normals) to a PLY (ascii or
 // binary), OFF or XYZ/PWN file through CGAL's writers. What it writes, read_points reads back
-// exactly (17 significant digits in ascii, the bits of the doubles in binary PLY).
+// exactly (17 significant digits in ascii, the bits of the doubles in binary PLY). Implements the
+// writing of points of doc/manual/io.md ("Functions", "Round trips are exact", "Errors").
 #pragma once
 
 #include <PCCD/Error.h>
 #include <PCCD/IO/Format.h>
 #include <PCCD/IO/Point_data.h>
-#include <PCCD/IO/internal/File_checks.h>
+#include <PCCD/IO/internal/finite_checks.h>
+#include <PCCD/IO/internal/write_helpers.h>
 
 #include <CGAL/IO/io.h>
 #include <CGAL/IO/write_off_points.h>

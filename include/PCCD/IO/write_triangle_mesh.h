@@ -1,11 +1,14 @@
 // PCCD/IO/write_triangle_mesh.h -- writes a triangle mesh to an OFF or PLY (ascii or binary) file
 // through CGAL's polygon soup writers. What it writes, read_triangle_mesh reads back exactly.
+// Implements the writing of meshes of doc/manual/io.md ("Functions", "Round trips are exact",
+// "Errors").
 #pragma once
 
 #include <PCCD/Error.h>
 #include <PCCD/IO/Format.h>
 #include <PCCD/IO/Triangle_mesh_data.h>
-#include <PCCD/IO/internal/File_checks.h>
+#include <PCCD/IO/internal/finite_checks.h>
+#include <PCCD/IO/internal/write_helpers.h>
 
 #include <CGAL/IO/OFF.h>
 #include <CGAL/IO/PLY.h>
