@@ -1,0 +1,186 @@
+// PCCD/internal/Point_cloud_object_file.h -- the object file format of Point_cloud_object: the
+// definitions of save() and load() and their helpers, through the little-endian binary reader and
+// writer of PCCD/internal/binary_stream.h. Included at the end of PCCD/Point_cloud_object.h, never
+// on its own. Implements doc/manual/surface.md, "One call: Point_cloud_object" (save and load).
+#pragma once
+
+#include <PCCD/Point_cloud_object.h>
+
+namespace PCCD {
+
+namespace internal {
+
+inline constexpr char object_magic[8] = {'P', 'C', 'C', 'D', 'O', 'B', 'J', '\0'};
+
+/// A read-only stream buffer over bytes held elsewhere, without copying them (the geodesic section
+/// of a loaded object file, read in place).
+class Span_streambuf : public std::streambuf {
+public:
+    Span_streambuf(const char* data, std::size_t size)
+    {
+        char* begin = const_cast<char*>(data); // a get area only: never written through
+        setg(begin, begin, begin + size);
+    }
+};
+
+inline std::string read_binary_file(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw File_error(path, "cannot open the file: it does not exist or is not readable");
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+} // namespace internal
+
+// File format (version 3, little-endian whatever the host, with a byte-order mark, no padding):
+//   magic "PCCDOBJ\0" | u32 version | u32 byte-order mark | u64 N | f64 sampling radius
+//   f64 bandwidth h | f64 theta_eps | u8 normals given | u64 flipped, components, unoriented
+//   f64 timings[5] | f64 points[3N] | f64 normals[3N]
+//   | f64 noise | u64 input points | u64 M | u32 outliers[M] | u64 D (0 or N) | f64 domain radii[D]
+//   | u8 surface fit (Surface_fit)
+//   | u64 G | G bytes: a geodesic file
+//   | u64 checksum (FNV-1a over 64-bit words of everything before it)
+// Version 1 files (without the scan section) still load: no outliers, noise 0, and the domain of
+// the default Surface_domain_options; versions 1 and 2 (without the fit) get the plane fit they
+// were made with.
+template <PointCloudKernel K>
+void Point_cloud_object<K>::save(const std::string& path) const
+{
+    const Data& d = *m_data;
+    std::ostringstream geodesic_stream(std::ios::binary);
+    internal::write_geodesic_stream(geodesic_stream, path, *d.graph, *d.cpsp);
+    const std::string geodesic = std::move(geodesic_stream).str();
+
+    internal::Binary_writer out;
+    out.write(internal::object_magic, sizeof internal::object_magic);
+    out.put(file_version);
+    out.put(internal::byte_order_mark);
+    out.put(std::uint64_t(size()));
+    out.put(d.sampling_radius);
+    out.put(bandwidth());
+    out.put(theta_eps());
+    out.put(std::uint8_t(d.normals_given ? 1 : 0));
+    out.put(std::uint64_t(d.orientation.flipped));
+    out.put(std::uint64_t(d.orientation.components));
+    out.put(std::uint64_t(d.orientation.unoriented));
+    for (double t : {d.timings.kd_tree, d.timings.graph, d.timings.sampling_radius, d.timings.cpsp, d.timings.normals})
+        out.put(t);
+    const Eigen::Matrix3Xd points = d.cloud.coordinates().template cast<double>();
+    out.write(points.data(), sizeof(double) * std::size_t(points.size()));
+    out.write(normals().data(), sizeof(double) * std::size_t(normals().size()));
+    out.put(d.scan.noise);
+    out.put(std::uint64_t(d.scan.input_points));
+    out.put(std::uint64_t(d.scan.outliers.size()));
+    out.write(d.scan.outliers.data(), sizeof(std::uint32_t) * d.scan.outliers.size());
+    out.put(std::uint64_t(domain_radii().size()));
+    out.write(domain_radii().data(), sizeof(double) * std::size_t(domain_radii().size()));
+    out.put(std::uint8_t(surface().fit()));
+    out.put(std::uint64_t(geodesic.size()));
+    out.write(geodesic.data(), geodesic.size());
+    out.finish();
+
+    std::ofstream file(path, std::ios::binary | std::ios::trunc);
+    if (!file) throw File_error(path, "cannot open the file for writing");
+    file.write(out.bytes().data(), std::streamsize(out.bytes().size()));
+    file.close();
+    if (!file) throw File_error(path, "write failed (disk full?)");
+}
+
+template <PointCloudKernel K>
+Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path,
+                                                 const Point_cloud_hierarchy_options& hierarchy)
+{
+    const std::string bytes = internal::read_binary_file(path);
+    internal::Binary_reader in(bytes, path);
+    char magic[8];
+    in.read(magic, sizeof magic);
+    if (std::memcmp(magic, internal::object_magic, sizeof magic) != 0) in.fail("not a PCCD object file");
+    const auto version = in.get<std::uint32_t>();
+    if (version == 0 || version > file_version)
+        in.fail(internal::concat("object file format version ", version, ", this PCCD reads versions 1 to ",
+                                 file_version));
+    if (in.get<std::uint32_t>() != internal::byte_order_mark) in.fail("written on a machine of another byte order");
+    if (bytes.size() < sizeof(std::uint64_t)) in.fail("truncated file");
+    {
+        internal::Word_checksum checksum;
+        checksum.update(bytes.data(), bytes.size() - sizeof(std::uint64_t));
+        const auto stored =
+            internal::decode_little_endian<std::uint64_t>(bytes.data() + bytes.size() - sizeof(std::uint64_t));
+        if (stored != checksum.value()) in.fail("checksum mismatch: the file is truncated or corrupted");
+    }
+    const auto n = in.get<std::uint64_t>();
+    if (n < 2 || n >= std::uint64_t(std::numeric_limits<std::uint32_t>::max()) ||
+        in.remaining() < 6 * sizeof(double) * n)
+        in.fail(internal::concat("inconsistent point count ", n));
+    const auto r = in.get<double>();
+    const auto h = in.get<double>();
+    const auto theta = in.get<double>();
+    const bool given = in.get<std::uint8_t>() != 0;
+    Orientation_report orientation;
+    orientation.flipped = std::size_t(in.get<std::uint64_t>());
+    orientation.components = std::size_t(in.get<std::uint64_t>());
+    orientation.unoriented = std::size_t(in.get<std::uint64_t>());
+    Preprocessing_times timings;
+    for (double* t : {&timings.kd_tree, &timings.graph, &timings.sampling_radius, &timings.cpsp, &timings.normals})
+        *t = in.get<double>();
+    Eigen::Matrix3Xd points(3, Eigen::Index(n)), normals(3, Eigen::Index(n));
+    in.read(points.data(), sizeof(double) * 3 * n);
+    in.read(normals.data(), sizeof(double) * 3 * n);
+    Scan_estimate scan;
+    scan.input_points = std::size_t(n);
+    std::optional<Eigen::VectorXd> domain;
+    if (version >= 2) {
+        scan.noise = in.get<double>();
+        const auto input = in.get<std::uint64_t>();
+        const auto m = in.get<std::uint64_t>();
+        if (!(std::isfinite(scan.noise) && scan.noise >= 0.0)) in.fail(internal::concat("invalid noise estimate ", scan.noise));
+        if (input < n || input - n != m || in.remaining() / sizeof(std::uint32_t) < m)
+            in.fail(internal::concat("inconsistent outlier count ", m, " for ", input, " input points"));
+        scan.input_points = std::size_t(input);
+        scan.outliers.resize(std::size_t(m));
+        in.read(scan.outliers.data(), sizeof(std::uint32_t) * std::size_t(m));
+        for (std::size_t k = 0; k < scan.outliers.size(); ++k)
+            if (scan.outliers[k] >= input || (k > 0 && scan.outliers[k] <= scan.outliers[k - 1]))
+                in.fail("outlier indices out of range or not ascending");
+        const auto radii = in.get<std::uint64_t>();
+        if ((radii != 0 && radii != n) || in.remaining() / sizeof(double) < radii)
+            in.fail(internal::concat("inconsistent number of domain radii ", radii));
+        domain.emplace(Eigen::Index(radii));
+        in.read(domain->data(), sizeof(double) * std::size_t(radii));
+    }
+    Surface_fit fit = Surface_fit::plane;
+    if (version >= 3) {
+        const auto stored = in.get<std::uint8_t>();
+        if (stored > std::uint8_t(Surface_fit::sphere)) in.fail(internal::concat("unknown surface fit ", int(stored)));
+        fit = Surface_fit(stored);
+    }
+    const auto geodesic_size = in.get<std::uint64_t>();
+    if (in.remaining() < sizeof(std::uint64_t) || in.remaining() - sizeof(std::uint64_t) != geodesic_size)
+        in.fail("inconsistent size of the geodesic section");
+    if (!(std::isfinite(r) && r > 0.0)) in.fail(internal::concat("invalid sampling radius ", r));
+
+    internal::Span_streambuf geodesic_section(bytes.data() + in.position(), geodesic_size);
+    std::istream geodesic_stream(&geodesic_section);
+    Geodesic_data geodesic = internal::read_geodesic_stream(geodesic_stream, geodesic_size, path, "geodesic section: ");
+    if (geodesic.graph.num_vertices() != n || geodesic.cpsp.size() != n)
+        in.fail("the geodesic section does not have one vertex per point");
+
+    try {
+        const auto start = Clock::now();
+        Point_cloud<K> cloud(typename Point_cloud<K>::Coordinates(points.template cast<FT>()));
+        timings.kd_tree = ms_since(start);
+        const Gaussian_weight weight(h, theta);
+        auto cpsp = std::make_shared<const Close_pairs_shortest_paths>(std::move(geodesic.cpsp));
+        auto graph = std::make_shared<const Proximity_graph>(std::move(geodesic.graph));
+        if (!domain) domain = surface_domain_radii(cloud);
+        return Point_cloud_object(std::make_shared<const Data>(
+            make_data(std::move(cloud), std::move(graph), std::move(cpsp), r, weight, std::move(normals),
+                      std::move(*domain), orientation, given, std::move(scan), timings, hierarchy, fit)));
+    } catch (const File_error&) {
+        throw;
+    } catch (const Invalid_input& e) {
+        in.fail(internal::concat("inconsistent content: ", e.what()));
+    }
+}
+
+} // namespace PCCD
