@@ -1,6 +1,6 @@
 // Reading and writing point clouds and triangle meshes: PLY (ascii, binary), OFF, XYZ/PWN
-// (issue: foundation, item 8). Exact round trips, the real bunny, and every kind of broken file,
-// each of which must throw PCCD::File_error naming the file and the problem -- never crash or hang.
+// (doc/manual/io.md). Exact round trips, the real bunny, and every kind of broken file, each of
+// which must throw PCCD::File_error naming the file and the problem -- never crash or hang.
 #include <PCCD/Error.h>
 #include <PCCD/IO/Format.h>
 #include <PCCD/IO/Point_data.h>
@@ -26,6 +26,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace {
@@ -38,6 +39,11 @@ using PCCD::IO::read_points;
 using PCCD::IO::read_triangle_mesh;
 using PCCD::IO::write_points;
 using PCCD::IO::write_triangle_mesh;
+
+// The data types are PCCD::Point_data and PCCD::Triangle_mesh_data, also named in PCCD::IO
+// (doc/manual/io.md, "Namespaces").
+static_assert(std::is_same_v<PCCD::IO::Point_data, PCCD::Point_data>);
+static_assert(std::is_same_v<PCCD::IO::Triangle_mesh_data, PCCD::Triangle_mesh_data>);
 
 template <class... Args>
 std::string str(const Args&... args)

@@ -1,5 +1,6 @@
 // PCCD/IO/Format.h -- the file formats PCCD reads and writes, the choice of a format from a file
-// name, and the options of the writers. This header does not include CGAL.
+// name, and the options of the writers. Implements the format table, "Functions" and
+// Write_options of doc/manual/io.md. This header does not include CGAL.
 #pragma once
 
 #include <algorithm>

@@ -1,6 +1,8 @@
 // PCCD/IO/Triangle_mesh_data.h -- the plain data a mesh file holds: vertices and triangles as
-// index triples. Filled by PCCD::IO::read_triangle_mesh and written by write_triangle_mesh.
-// This header does not include CGAL.
+// index triples. Filled by PCCD::IO::read_triangle_mesh, written by PCCD::IO::write_triangle_mesh,
+// and taken by Exact_mesh. Implements the mesh data of doc/manual/io.md; its name is
+// PCCD::Triangle_mesh_data, and PCCD::IO::Triangle_mesh_data names the same type (doc/manual/io.md,
+// "Namespaces"). This header does not include CGAL.
 #pragma once
 
 #include <array>
@@ -19,5 +21,10 @@ struct Triangle_mesh_data {
     /// three vertices appear here as fans (see read_triangle_mesh).
     std::vector<std::array<std::uint32_t, 3>> triangles;
 };
+
+namespace IO {
+/// The same type as PCCD::Triangle_mesh_data, so that the whole I/O interface is found in PCCD::IO.
+using PCCD::Triangle_mesh_data;
+} // namespace IO
 
 } // namespace PCCD
