@@ -50,24 +50,23 @@ struct Orientation_report {
 
 namespace internal {
 
-/// Orientation over the graph with optional hints (`hints` null: none; else 3 x N, a zero or
-/// non-finite column meaning no hint). The rule is documented at orient_normals_with_hints().
-template <class Graph, class Positions, class VirtualMap>
-Orientation_report orient_normals_over_graph(const char* caller, const Graph& g,
-                                             const Eigen::MatrixBase<Positions>& positions, Eigen::Matrix3Xd& normals,
-                                             const Eigen::Matrix3Xd* hints, const VirtualMap& is_virtual)
+/// The normals after the hints, and what the propagation needs to know of them.
+struct Hinted_normals {
+    std::vector<char> has_hint, has_normal;
+    Eigen::Vector3d centroid; // of all positions
+};
+
+/// Checks the normals, gives every hinted point its hint's side (or the hint itself where the fit
+/// is undetermined), counts hints and unoriented points into `report`.
+template <class Positions>
+Hinted_normals apply_hints(const char* caller, const Eigen::MatrixBase<Positions>& positions, Eigen::Matrix3Xd& normals,
+                           const Eigen::Matrix3Xd* hints, Orientation_report& report)
 {
-    const std::size_t n = num_vertices(g);
-    if (std::size_t(positions.cols()) != n || std::size_t(normals.cols()) != n || positions.rows() != 3)
-        throw Invalid_input(internal::concat(caller, ": the graph has ", n, " vertices, the positions ",
-                                             positions.cols(), " columns and the normals ", normals.cols()));
-    if (hints && std::size_t(hints->cols()) != n)
-        throw Invalid_input(internal::concat(caller, ": ", hints->cols(), " hints for ", n,
-                                             " points (need one per point, or none)"));
-    Orientation_report report;
-    const Eigen::Matrix3Xd original = normals;
-    std::vector<char> has_hint(n, 0), has_normal(n, 0);
-    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    const std::size_t n = std::size_t(normals.cols());
+    Hinted_normals result{std::vector<char>(n, 0), std::vector<char>(n, 0), Eigen::Vector3d::Zero()};
+    std::vector<char>& has_hint = result.has_hint;
+    std::vector<char>& has_normal = result.has_normal;
+    Eigen::Vector3d& centroid = result.centroid;
     for (std::size_t i = 0; i < n; ++i) {
         const auto column = normals.col(Eigen::Index(i));
         if (!internal::all_finite(column))
@@ -91,6 +90,19 @@ Orientation_report orient_normals_over_graph(const char* caller, const Graph& g,
         centroid += positions.col(Eigen::Index(i)).template cast<double>();
     }
     if (n > 0) centroid /= double(n);
+    return result;
+}
+
+/// Propagates the signs over each connected component of `g` (the rule of
+/// orient_normals_with_hints()), counting components into `report`.
+template <class Graph, class Positions, class VirtualMap>
+void propagate_signs(const Graph& g, const Eigen::MatrixBase<Positions>& positions, Eigen::Matrix3Xd& normals,
+                     const Hinted_normals& state, const VirtualMap& is_virtual, Orientation_report& report)
+{
+    const std::size_t n = std::size_t(normals.cols());
+    const std::vector<char>& has_hint = state.has_hint;
+    const std::vector<char>& has_normal = state.has_normal;
+    const Eigen::Vector3d& centroid = state.centroid;
     // Unit normals for the weights and the signs as they stand after the hints; the signs of points
     // without a hint are set relative to these.
     Eigen::Matrix3Xd unit(3, Eigen::Index(n));
@@ -160,6 +172,26 @@ Orientation_report orient_normals_over_graph(const char* caller, const Graph& g,
         if (outwardness < 0.0)
             for (const std::uint32_t v : order) normals.col(v) = -normals.col(v);
     }
+}
+
+/// Orientation over the graph with optional hints (`hints` null: none; else 3 x N, a zero or
+/// non-finite column meaning no hint). The rule is documented at orient_normals_with_hints().
+template <class Graph, class Positions, class VirtualMap>
+Orientation_report orient_normals_over_graph(const char* caller, const Graph& g,
+                                             const Eigen::MatrixBase<Positions>& positions, Eigen::Matrix3Xd& normals,
+                                             const Eigen::Matrix3Xd* hints, const VirtualMap& is_virtual)
+{
+    const std::size_t n = num_vertices(g);
+    if (std::size_t(positions.cols()) != n || std::size_t(normals.cols()) != n || positions.rows() != 3)
+        throw Invalid_input(internal::concat(caller, ": the graph has ", n, " vertices, the positions ",
+                                             positions.cols(), " columns and the normals ", normals.cols()));
+    if (hints && std::size_t(hints->cols()) != n)
+        throw Invalid_input(internal::concat(caller, ": ", hints->cols(), " hints for ", n,
+                                             " points (need one per point, or none)"));
+    Orientation_report report;
+    const Eigen::Matrix3Xd original = normals;
+    const Hinted_normals state = apply_hints(caller, positions, normals, hints, report);
+    propagate_signs(g, positions, normals, state, is_virtual, report);
     for (std::size_t i = 0; i < n; ++i)
         if (normals.col(Eigen::Index(i)).dot(original.col(Eigen::Index(i))) < 0.0) ++report.flipped;
     return report;

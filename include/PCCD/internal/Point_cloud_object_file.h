@@ -32,6 +32,34 @@ inline std::string read_binary_file(const std::string& path)
 
 } // namespace internal
 
+namespace internal {
+
+/// The scan section of an object file (format version >= 2): noise estimate, outliers and domain
+/// radii of an object of n points, checked.
+inline void read_scan_section(Binary_reader& in, std::uint64_t n, Scan_estimate& scan,
+                              std::optional<Eigen::VectorXd>& domain)
+{
+    scan.noise = in.get<double>();
+    const auto input = in.get<std::uint64_t>();
+    const auto m = in.get<std::uint64_t>();
+    if (!(std::isfinite(scan.noise) && scan.noise >= 0.0)) in.fail(internal::concat("invalid noise estimate ", scan.noise));
+    if (input < n || input - n != m || in.remaining() / sizeof(std::uint32_t) < m)
+        in.fail(internal::concat("inconsistent outlier count ", m, " for ", input, " input points"));
+    scan.input_points = std::size_t(input);
+    scan.outliers.resize(std::size_t(m));
+    in.read(scan.outliers.data(), sizeof(std::uint32_t) * std::size_t(m));
+    for (std::size_t k = 0; k < scan.outliers.size(); ++k)
+        if (scan.outliers[k] >= input || (k > 0 && scan.outliers[k] <= scan.outliers[k - 1]))
+            in.fail("outlier indices out of range or not ascending");
+    const auto radii = in.get<std::uint64_t>();
+    if ((radii != 0 && radii != n) || in.remaining() / sizeof(double) < radii)
+        in.fail(internal::concat("inconsistent number of domain radii ", radii));
+    domain.emplace(Eigen::Index(radii));
+    in.read(domain->data(), sizeof(double) * std::size_t(radii));
+}
+
+} // namespace internal
+
 // File format (version 3, little-endian whatever the host, with a byte-order mark, no padding):
 //   magic "PCCDOBJ\0" | u32 version | u32 byte-order mark | u64 N | f64 sampling radius
 //   f64 bandwidth h | f64 theta_eps | u8 normals given | u64 flipped, components, unoriented
@@ -129,25 +157,7 @@ Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path,
     Scan_estimate scan;
     scan.input_points = std::size_t(n);
     std::optional<Eigen::VectorXd> domain;
-    if (version >= 2) {
-        scan.noise = in.get<double>();
-        const auto input = in.get<std::uint64_t>();
-        const auto m = in.get<std::uint64_t>();
-        if (!(std::isfinite(scan.noise) && scan.noise >= 0.0)) in.fail(internal::concat("invalid noise estimate ", scan.noise));
-        if (input < n || input - n != m || in.remaining() / sizeof(std::uint32_t) < m)
-            in.fail(internal::concat("inconsistent outlier count ", m, " for ", input, " input points"));
-        scan.input_points = std::size_t(input);
-        scan.outliers.resize(std::size_t(m));
-        in.read(scan.outliers.data(), sizeof(std::uint32_t) * std::size_t(m));
-        for (std::size_t k = 0; k < scan.outliers.size(); ++k)
-            if (scan.outliers[k] >= input || (k > 0 && scan.outliers[k] <= scan.outliers[k - 1]))
-                in.fail("outlier indices out of range or not ascending");
-        const auto radii = in.get<std::uint64_t>();
-        if ((radii != 0 && radii != n) || in.remaining() / sizeof(double) < radii)
-            in.fail(internal::concat("inconsistent number of domain radii ", radii));
-        domain.emplace(Eigen::Index(radii));
-        in.read(domain->data(), sizeof(double) * std::size_t(radii));
-    }
+    if (version >= 2) internal::read_scan_section(in, n, scan, domain);
     Surface_fit fit = Surface_fit::plane;
     if (version >= 3) {
         const auto stored = in.get<std::uint8_t>();
