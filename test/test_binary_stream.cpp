@@ -8,11 +8,15 @@
 
 #include <catch2/catch.hpp>
 
+#include "byte_helpers.h"
+
 #include <bit>
 #include <cstdint>
 #include <sstream>
 #include <string>
 #include <vector>
+
+using pccd_test::bytes_of;
 
 namespace {
 
@@ -25,18 +29,6 @@ std::vector<unsigned> encoded(T value)
     unsigned char bytes[sizeof(T)];
     encode_little_endian(value, bytes);
     return {bytes, bytes + sizeof(T)};
-}
-
-std::vector<unsigned> bytes_of(const std::string& text)
-{
-    std::vector<unsigned> out;
-    for (const char c : text) out.push_back(static_cast<unsigned char>(c));
-    return out;
-}
-
-std::vector<unsigned> bytes_of(const std::string& text, std::size_t offset, std::size_t count)
-{
-    return bytes_of(text.substr(offset, count));
 }
 
 } // namespace

@@ -12,11 +12,15 @@
 
 #include <catch2/catch.hpp>
 
+#include "byte_helpers.h"
+
 #include <cstdint>
 #include <fstream>
 #include <iterator>
 #include <string>
 #include <vector>
+
+using pccd_test::bytes_of;
 
 namespace {
 
@@ -27,18 +31,6 @@ std::string file_bytes(const std::string& path)
 {
     std::ifstream in(path, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-std::vector<unsigned> bytes_of(const std::string& text)
-{
-    std::vector<unsigned> out;
-    for (const char c : text) out.push_back(static_cast<unsigned char>(c));
-    return out;
-}
-
-std::vector<unsigned> bytes_of(const std::string& text, std::size_t offset, std::size_t count)
-{
-    return bytes_of(text.substr(offset, count));
 }
 
 } // namespace
