@@ -6,7 +6,7 @@
 //
 // Concepts covered: CollisionObject and LeafIntersector (do_intersect, intersection_points, both
 // policies, both path choices), PathSource, SurfaceDistance and SurfaceWeight (WLS_surface,
-// estimate_normals).
+// estimate_normals), PointCloudKernel and ReadablePointMap (Point_cloud_object, then the queries).
 #include "surface_test_helpers.h"
 
 #include <PCCD/Intersection/do_intersect.h>
@@ -238,7 +238,72 @@ struct Weight_without_support {
     double operator()(double) const;
 };
 
+/// Exactly what PointCloudKernel requires: its own point and vector types, the four constructions.
+struct Kernel {
+    using FT = double;
+    struct Point_3 {
+        double x, y, z;
+    };
+    struct Vector_3 {
+        double x, y, z;
+    };
+    struct Construct_point {
+        Point_3 operator()(double x, double y, double z) const { return {x, y, z}; }
+    };
+    struct Coordinate {
+        int axis;
+        double operator()(const Point_3& p) const { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
+    };
+    struct Squared_distance {
+        double operator()(const Point_3& p, const Point_3& q) const
+        {
+            return (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y) + (p.z - q.z) * (p.z - q.z);
+        }
+    };
+    Construct_point construct_point_3_object() const { return {}; }
+    Coordinate compute_x_3_object() const { return {0}; }
+    Coordinate compute_y_3_object() const { return {1}; }
+    Coordinate compute_z_3_object() const { return {2}; }
+    Squared_distance compute_squared_distance_3_object() const { return {}; }
+};
+struct Integer_kernel : Kernel { // FT is not a floating-point type
+    using FT = long;
+};
+struct Kernel_without_distance {
+    using FT = double;
+    using Point_3 = Kernel::Point_3;
+    using Vector_3 = Kernel::Vector_3;
+    Kernel::Construct_point construct_point_3_object() const;
+    Kernel::Coordinate compute_x_3_object() const;
+    Kernel::Coordinate compute_y_3_object() const;
+    Kernel::Coordinate compute_z_3_object() const;
+};
+
+/// A user's scan record and exactly what ReadablePointMap requires of a map over it: get() by ADL
+/// returning a Point3 (here an Eigen vector by value).
+struct Scan_record {
+    float position[3];
+    int intensity;
+};
+struct Point_map {
+    friend Eigen::Vector3d get(const Point_map&, const Scan_record& r)
+    {
+        return Eigen::Vector3d(r.position[0], r.position[1], r.position[2]);
+    }
+};
+struct Intensity_map { // get() gives no point
+    friend int get(const Intensity_map&, const Scan_record& r) { return r.intensity; }
+};
+struct Map_without_get {};
+
 } // namespace archetype
+
+static_assert(PCCD::PointCloudKernel<archetype::Kernel>);
+static_assert(!PCCD::PointCloudKernel<archetype::Integer_kernel>);
+static_assert(!PCCD::PointCloudKernel<archetype::Kernel_without_distance>);
+static_assert(PCCD::ReadablePointMap<archetype::Point_map, archetype::Scan_record>);
+static_assert(!PCCD::ReadablePointMap<archetype::Intensity_map, archetype::Scan_record>);
+static_assert(!PCCD::ReadablePointMap<archetype::Map_without_get, archetype::Scan_record>);
 
 static_assert(PCCD::CollisionObject<archetype::Collision_object>);
 static_assert(!PCCD::CollisionObject<archetype::Without_noise_estimate>);
@@ -287,6 +352,34 @@ TEST_CASE("the intersection queries run on collision-object archetypes as on the
         CHECK(PCCD::do_intersect(arch, identity, arch, pose, {}, archetype::Leaf_intersector{}).intersects == expected);
         const auto curve = PCCD::intersection_points(arch, identity, arch, pose);
         CHECK(curve.points.size() == PCCD::intersection_points(object, identity, object, pose).points.size());
+    }
+}
+
+TEST_CASE("a point cloud object builds and collides with kernel and point-map archetypes", "[concepts]")
+{
+    // The same points through a user record and map, and in a kernel with nothing but the required
+    // constructions: the same object (points, normals) and the same answers as the default model.
+    const auto sample = sample_shape(unit_sphere(), 2000, 0.0, 95);
+    std::vector<archetype::Scan_record> records;
+    for (Eigen::Index i = 0; i < sample.points.cols(); ++i)
+        records.push_back({{float(sample.points(0, i)), float(sample.points(1, i)), float(sample.points(2, i))}, 7});
+    std::vector<Eigen::Vector3d> points;
+    for (const auto& r : records) points.push_back(get(archetype::Point_map{}, r));
+    const archetype::Object model(points);
+    const archetype::Object mapped(records, archetype::Point_map{});
+    const PCCD::Point_cloud_object<archetype::Kernel> kernel(records, archetype::Point_map{});
+    CHECK(mapped.normals() == model.normals());
+    CHECK(kernel.normals() == model.normals());
+    const auto p = kernel.cloud().point(3);
+    CHECK(p.x == model.cloud().position(3).x());
+    const PCCD::Rigid_transform_3<double> identity;
+    for (const double shift : {1.0, 2.5}) {
+        const PCCD::Rigid_transform_3<double> pose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(shift, 0.0, 0.0));
+        const auto expected = PCCD::do_intersect(model, identity, model, pose);
+        CHECK(expected.intersects == (shift < 2.0));
+        CHECK(PCCD::do_intersect(kernel, identity, mapped, pose).intersects == expected.intersects);
+        CHECK(PCCD::do_intersect(kernel, identity, kernel, pose).counters.f_evaluations ==
+              expected.counters.f_evaluations);
     }
 }
 
