@@ -6,7 +6,8 @@
 //
 // Concepts covered: CollisionObject and LeafIntersector (do_intersect, intersection_points, both
 // policies, both path choices), PathSource, SurfaceDistance and SurfaceWeight (WLS_surface,
-// estimate_normals), PointCloudKernel and ReadablePointMap (Point_cloud_object, then the queries).
+// estimate_normals), PointCloudKernel and ReadablePointMap (Point_cloud_object, then the queries),
+// PointGraph and ProximityGraph (orient_normals, Paths_on_the_fly).
 #include "surface_test_helpers.h"
 
 #include <PCCD/Intersection/do_intersect.h>
@@ -15,14 +16,98 @@
 #include <PCCD/Surface/estimate_normals.h>
 #include <PCCD/concepts/CollisionObject.h>
 #include <PCCD/concepts/PathSource.h>
+#include <PCCD/concepts/ProximityGraph.h>
+#include <PCCD/Geodesic/Paths_on_the_fly.h>
+#include <PCCD/Surface/orient_normals.h>
 #include <PCCD/concepts/SurfaceDistance.h>
 #include <PCCD/concepts/SurfaceWeight.h>
 
 #include <catch2/catch.hpp>
 
 #include <cstdint>
+#include <limits>
 #include <optional>
+#include <string>
+#include <utility>
 #include <vector>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/iterator/counting_iterator.hpp>
+#include <boost/iterator/transform_iterator.hpp>
+
+
+namespace archetype {
+
+/// Exactly what PointGraph / ProximityGraph require: a compressed adjacency with integral vertices,
+/// vertex and out-edge ranges, source and target, and a length map (graph_traits below).
+struct Graph {
+    std::vector<std::uint64_t> offsets; // n + 1
+    std::vector<std::uint32_t> targets;
+    std::vector<float> lengths;
+};
+struct Edge {
+    std::uint32_t source;
+    std::uint64_t index;
+    bool operator==(const Edge&) const = default;
+};
+struct Make_edge {
+    std::uint32_t source;
+    Edge operator()(std::uint64_t index) const { return {source, index}; }
+};
+using Vertex_iterator = boost::counting_iterator<std::uint32_t>;
+using Out_edge_iterator = boost::transform_iterator<Make_edge, boost::counting_iterator<std::uint64_t>, Edge, Edge>;
+
+inline std::size_t num_vertices(const Graph& g) { return g.offsets.size() - 1; }
+inline std::pair<Vertex_iterator, Vertex_iterator> vertices(const Graph& g)
+{
+    return {Vertex_iterator(0), Vertex_iterator(std::uint32_t(num_vertices(g)))};
+}
+inline std::pair<Out_edge_iterator, Out_edge_iterator> out_edges(std::uint32_t v, const Graph& g)
+{
+    return {Out_edge_iterator(boost::counting_iterator<std::uint64_t>(g.offsets[v]), Make_edge{v}),
+            Out_edge_iterator(boost::counting_iterator<std::uint64_t>(g.offsets[v + 1]), Make_edge{v})};
+}
+inline std::size_t out_degree(std::uint32_t v, const Graph& g) { return std::size_t(g.offsets[v + 1] - g.offsets[v]); }
+inline std::uint32_t source(const Edge& e, const Graph&) { return e.source; }
+inline std::uint32_t target(const Edge& e, const Graph& g) { return g.targets[e.index]; }
+
+struct Length_map {
+    const Graph* graph;
+    friend double get(const Length_map& m, const Edge& e) { return m.graph->lengths[e.index]; }
+};
+
+/// Near-miss: a graph whose vertices are not indices (a string-keyed graph).
+struct Named_graph {};
+
+} // namespace archetype
+
+namespace boost {
+template <>
+struct graph_traits<archetype::Graph> {
+    using vertex_descriptor = std::uint32_t;
+    using edge_descriptor = archetype::Edge;
+    struct traversal_category : vertex_list_graph_tag, incidence_graph_tag {};
+    using directed_category = directed_tag;
+    using edge_parallel_category = allow_parallel_edge_tag;
+    using vertex_iterator = archetype::Vertex_iterator;
+    using out_edge_iterator = archetype::Out_edge_iterator;
+    using vertices_size_type = std::size_t;
+    using edges_size_type = std::size_t;
+    using degree_size_type = std::size_t;
+    static vertex_descriptor null_vertex() { return std::numeric_limits<std::uint32_t>::max(); }
+};
+template <>
+struct graph_traits<archetype::Named_graph> {
+    using vertex_descriptor = std::string;
+    using edge_descriptor = std::pair<std::string, std::string>;
+    struct traversal_category : vertex_list_graph_tag, incidence_graph_tag {};
+};
+} // namespace boost
+
+static_assert(PCCD::PointGraph<archetype::Graph>);
+static_assert(PCCD::ProximityGraph<archetype::Graph, archetype::Length_map>);
+static_assert(!PCCD::ProximityGraph<archetype::Graph, int>);
+static_assert(!PCCD::PointGraph<archetype::Named_graph>);
 
 using namespace pccd_test;
 
@@ -428,4 +513,53 @@ TEST_CASE("the implicit surface runs on distance and weight archetypes as on the
         }
         CHECK(arch.evaluate_at(7).value == model.evaluate_at(7).value);
     }
+}
+
+TEST_CASE("normal orientation and paths on the fly run on a graph archetype as on the model", "[concepts]")
+{
+    // The object's proximity graph copied into the archetype (real edges only, same order): the
+    // same orientation and the same path lengths as on PCCD's own graph type.
+    const auto sample = sample_shape(test_torus(), 2000, 0.0, 96);
+    const archetype::Object object(columns(sample.points));
+    const PCCD::Proximity_graph& model = object.graph();
+    archetype::Graph graph;
+    graph.offsets.push_back(0);
+    for (std::uint32_t v = 0; v < model.num_vertices(); ++v) {
+        for (auto e = model.row_offsets()[v]; e < model.row_offsets()[v + 1]; ++e) {
+            if (model.edge_property(e).is_virtual) continue;
+            graph.targets.push_back(model.targets()[e]);
+            graph.lengths.push_back(model.edge_property(e).length);
+        }
+        graph.offsets.push_back(graph.targets.size());
+    }
+    Eigen::Matrix3Xd on_model = object.normals(), on_archetype = object.normals();
+    for (Eigen::Index i = 0; i < on_model.cols(); i += 3) { // scramble some signs
+        on_model.col(i) *= -1.0;
+        on_archetype.col(i) *= -1.0;
+    }
+    const auto report_model = PCCD::orient_normals(model, object.cloud().coordinates(), on_model);
+    const auto report_archetype = PCCD::orient_normals(graph, object.cloud().coordinates(), on_archetype);
+    CHECK(on_archetype == on_model);
+    CHECK(report_archetype.flipped == report_model.flipped);
+    CHECK(report_archetype.components == report_model.components);
+
+    const PCCD::Paths_on_the_fly<archetype::Graph, archetype::Length_map> archetype_paths(
+        graph, archetype::Length_map{&graph}, object.cloud().coordinates(), {.bound = object.cpsp().bound()});
+    const auto model_paths = PCCD::paths_on_the_fly(model, object.cloud(), {.bound = object.cpsp().bound()});
+    std::vector<std::uint32_t> a, m;
+    std::size_t found = 0;
+    for (std::uint32_t from = 0; from < 2000; from += 97)
+        for (const std::uint32_t to : object.cpsp().targets(from)) {
+            const bool on_archetype_graph = archetype_paths.path(from, to, a);
+            REQUIRE(on_archetype_graph == model_paths.path(from, to, m));
+            found += on_archetype_graph;
+            const auto length = [&](const std::vector<std::uint32_t>& path) {
+                double sum = 0.0;
+                for (std::size_t k = 0; k + 1 < path.size(); ++k)
+                    sum += (object.cloud().position(path[k]) - object.cloud().position(path[k + 1])).norm();
+                return sum;
+            };
+            CHECK(length(a) == Catch::Detail::Approx(length(m)).epsilon(1e-6));
+        }
+    CHECK(found > 100);
 }

@@ -210,7 +210,7 @@ Orientation_report orient_normals_over_graph(const char* caller, const Graph& g,
 /// components end up facing outward; open pieces (such as the two faces of a thin plate) face away
 /// from the centroid of the whole cloud.
 ///
-/// \tparam Graph a model of ProximityGraph (any weight map: only the structure is read); directed
+/// \tparam Graph a model of PointGraph (only the structure is read); directed
 ///         models must store both directions of every edge.
 /// \tparam Positions an Eigen 3 x N matrix expression (float or double).
 /// \tparam VirtualMap a model of EdgeFlagMap (PCCD::No_virtual_edges for graphs without the mark).
@@ -220,7 +220,7 @@ Orientation_report orient_normals_over_graph(const char* caller, const Graph& g,
 /// Complexity: O(E log E). Deterministic: ties between equal weights go to the smaller index.
 /// Thread safety: reads `g` and `positions`, writes `normals` only.
 template <class Graph, class Positions, class VirtualMap = No_virtual_edges>
-    requires(!std::is_same_v<Graph, Proximity_graph>) && EdgeFlagMap<VirtualMap, Graph>
+    requires(!std::is_same_v<Graph, Proximity_graph>) && PointGraph<Graph> && EdgeFlagMap<VirtualMap, Graph>
 Orientation_report orient_normals(const Graph& g, const Eigen::MatrixBase<Positions>& positions,
                                   Eigen::Matrix3Xd& normals, const VirtualMap& is_virtual = {})
 {
@@ -261,7 +261,7 @@ Orientation_report orient_normals(const Proximity_graph& graph, const Eigen::Mat
 /// Complexity: O(E log E). Deterministic: ties between equal weights go to the smaller index.
 /// Thread safety: reads `g`, `positions` and `hints`, writes `normals` only.
 template <class Graph, class Positions, class Hints, class VirtualMap = No_virtual_edges>
-    requires(!std::is_same_v<Graph, Proximity_graph>) && EdgeFlagMap<VirtualMap, Graph>
+    requires(!std::is_same_v<Graph, Proximity_graph>) && PointGraph<Graph> && EdgeFlagMap<VirtualMap, Graph>
 Orientation_report orient_normals_with_hints(const Graph& g, const Eigen::MatrixBase<Positions>& positions,
                                              Eigen::Matrix3Xd& normals, const Eigen::MatrixBase<Hints>& hints,
                                              const VirtualMap& is_virtual = {})

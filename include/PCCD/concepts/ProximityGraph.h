@@ -11,16 +11,37 @@
 
 namespace PCCD {
 
-/// \concept ProximityGraph
-/// A Boost.Graph model over the points of a cloud (vertex `i` is point `i`) with edge lengths.
+/// \concept PointGraph
+/// A Boost.Graph model over the points of a cloud (vertex `i` is point `i`), without weights: what
+/// the walks that need only the adjacency use (orient_normals()).
 ///
-/// Requirements, for `const G& g`, a vertex `v`, an edge `e` and `const WeightMap& w`:
+/// Requirements, for `const G& g`, a vertex `v` and an edge `e`:
 /// - `boost::graph_traits<G>::traversal_category` converts to both
 ///   `boost::vertex_list_graph_tag` and `boost::incidence_graph_tag`;
 /// - the vertex descriptor is an integral type (vertex `i` is point `i`);
 /// - `num_vertices(g)`, `vertices(g)`, `out_edges(v, g)`, `out_degree(v, g)`, `source(e, g)`,
-///   `target(e, g)` as in BGL's VertexListGraph and IncidenceGraph concepts;
-/// - `get(w, e)` returns the edge's length, convertible to double (a readable property map).
+///   `target(e, g)` as in BGL's VertexListGraph and IncidenceGraph concepts.
+///
+/// Models: every ProximityGraph's graph type.
+template <class G>
+concept PointGraph = requires(const G& g, typename boost::graph_traits<G>::vertex_descriptor v,
+                              typename boost::graph_traits<G>::edge_descriptor e) {
+    requires std::is_convertible_v<typename boost::graph_traits<G>::traversal_category, boost::vertex_list_graph_tag>;
+    requires std::is_convertible_v<typename boost::graph_traits<G>::traversal_category, boost::incidence_graph_tag>;
+    requires std::integral<typename boost::graph_traits<G>::vertex_descriptor>;
+    { num_vertices(g) } -> std::convertible_to<std::size_t>;
+    vertices(g);
+    out_edges(v, g);
+    { out_degree(v, g) } -> std::convertible_to<std::size_t>;
+    { source(e, g) } -> std::convertible_to<typename boost::graph_traits<G>::vertex_descriptor>;
+    { target(e, g) } -> std::convertible_to<typename boost::graph_traits<G>::vertex_descriptor>;
+};
+
+/// \concept ProximityGraph
+/// A PointGraph with edge lengths: the graphs PCCD walks for geodesic distances and shortest paths.
+///
+/// Requirements: `G` models PointGraph, and for an edge `e` and `const WeightMap& w`, `get(w, e)`
+/// returns the edge's length, convertible to double (a readable property map).
 ///
 /// Edges are undirected: a directed model must store both directions of every edge with the same
 /// length (as PCCD::Proximity_graph::Graph does), an undirectedS model stores each edge once. Lengths
@@ -30,22 +51,9 @@ namespace PCCD {
 /// PCCD::Proximity_graph::Graph with Proximity_graph::Length_map) and
 /// boost::adjacency_list<vecS, vecS, ...>, each with its weight map.
 template <class G, class WeightMap>
-concept ProximityGraph =
-    requires(const G& g, typename boost::graph_traits<G>::vertex_descriptor v,
-             typename boost::graph_traits<G>::edge_descriptor e, const WeightMap& w) {
-        requires std::is_convertible_v<typename boost::graph_traits<G>::traversal_category,
-                                       boost::vertex_list_graph_tag>;
-        requires std::is_convertible_v<typename boost::graph_traits<G>::traversal_category,
-                                       boost::incidence_graph_tag>;
-        requires std::integral<typename boost::graph_traits<G>::vertex_descriptor>;
-        { num_vertices(g) } -> std::convertible_to<std::size_t>;
-        vertices(g);
-        out_edges(v, g);
-        { out_degree(v, g) } -> std::convertible_to<std::size_t>;
-        { source(e, g) } -> std::convertible_to<typename boost::graph_traits<G>::vertex_descriptor>;
-        { target(e, g) } -> std::convertible_to<typename boost::graph_traits<G>::vertex_descriptor>;
-        { get(w, e) } -> std::convertible_to<double>;
-    };
+concept ProximityGraph = PointGraph<G> && requires(typename boost::graph_traits<G>::edge_descriptor e, const WeightMap& w) {
+    { get(w, e) } -> std::convertible_to<double>;
+};
 
 /// \concept EdgeFlagMap
 /// A readable property map from the edges of graph `G` to a flag, used for the "virtual" mark of
