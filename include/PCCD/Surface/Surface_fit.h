@@ -10,6 +10,8 @@
 
 #include <Eigen/Core>
 
+#include <PCCD/internal/finite.h>
+
 namespace PCCD {
 
 /// The local shape WLS_surface fits at each evaluation point x.
@@ -88,7 +90,7 @@ inline std::optional<Sphere_value> fit_sphere(const Sphere_sums& sums, const Eig
     const double discriminant = 0.25 * length * length - u0 * u4;
     if (!(length > 0.0) || !(discriminant >= 0.0) || !(u.dot(reference) > 0.0)) return std::nullopt;
     const Sphere_value result{u0 / (0.5 * length + std::sqrt(discriminant)), u / length};
-    if (!std::isfinite(result.value) || !result.normal.allFinite()) return std::nullopt;
+    if (!std::isfinite(result.value) || !all_finite(result.normal)) return std::nullopt;
     return result;
 }
 
