@@ -295,15 +295,21 @@ TEST_CASE("Queries are deterministic, pose-invariant and respect the budget", "[
             CHECK((g.transform_point(plain.points[0].position) - moved.points[0].position).norm() < 1e-9);
     }
 
-    // A budget stops a query that would otherwise search on (separate spheres, just out of reach).
+    // A budget stops a query that would otherwise search on (separate spheres, just out of reach of
+    // the flat traversal's kernel support; the default traversal proves them separate at once).
     const double r = s.a.sampling_radius();
-    const auto full = PCCD::do_intersect(s.a, Rigid_transform_3<double>(), s.b, shifted(2.0 + 2 * r), {.seed = 1});
+    const auto walked = PCCD::do_intersect(s.a, Rigid_transform_3<double>(), s.b, shifted(2.0 + 2 * r), {.seed = 1});
+    CHECK(walked.status == PCCD::Intersection_status::separate);
+    CHECK(walked.counters.f_evaluations == 0);
+    const PCCD::Traversal flat = PCCD::Traversal::flat;
+    const auto full = PCCD::do_intersect(s.a, Rigid_transform_3<double>(), s.b, shifted(2.0 + 2 * r),
+                                         {.seed = 1, .traversal = flat});
     REQUIRE(full.status == PCCD::Intersection_status::separate);
     REQUIRE(full.counters.f_evaluations > 20);
     const auto limited = PCCD::do_intersect(s.a, Rigid_transform_3<double>(), s.b, shifted(2.0 + 2 * r),
-                                            {.seed = 1, .max_f_evaluations = 20});
+                                            {.seed = 1, .traversal = flat, .max_f_evaluations = 20});
     CHECK(limited.counters.f_evaluations == 20);
-    CHECK(limited.status == PCCD::Intersection_status::budget_exhausted);
+    CHECK(limited.status == PCCD::Intersection_status::undecided);
     CHECK_FALSE(limited.intersects);
     // RST on a pose where its full sampling needs more than the budget (a tiny epsilon: many cells, few hits).
     const auto rst_full = PCCD::do_intersect(s.a, Rigid_transform_3<double>(), s.b, shifted(1.0),
@@ -313,7 +319,7 @@ TEST_CASE("Queries are deterministic, pose-invariant and respect the budget", "[
                                                 {.seed = 1, .epsilon = 0.01 * r, .max_f_evaluations = 20},
                                                 PCCD::Randomized_sampling{});
     CHECK(rst_limited.counters.f_evaluations <= 20);
-    if (!rst_limited.intersects) CHECK(rst_limited.status == PCCD::Intersection_status::budget_exhausted);
+    if (!rst_limited.intersects) CHECK(rst_limited.status == PCCD::Intersection_status::undecided);
 }
 
 TEST_CASE("Invalid query options are rejected with a message naming them", "[intersection]")

@@ -35,6 +35,8 @@ struct Bench_options {
     std::uint64_t seed = 1;
     std::size_t points = 30000;
     std::string csv;
+    std::string hierarchy = "likelihood";
+    double budget_us = 0.0;
 };
 
 double parse_distance(const std::string& text, const std::string& spec)
@@ -132,7 +134,7 @@ void run_bench(const Bench_options& o)
     std::printf("method %s, first hit, %zu distances x %zu rotations, seed %llu, one query per pose, one thread\n",
                 o.method.c_str(), distances.size(), o.rotations, static_cast<unsigned long long>(o.seed));
 
-    const PCCD::Intersection_options options{.seed = o.seed};
+    const PCCD::Intersection_options options = query_options(o.seed, o.hierarchy, o.budget_us);
     // One untimed query first, so that the first timed pose does not pay for cold caches.
     run_timed_query(object, poses.front().pose_a, object, poses.front().pose_b, options, o.method, true);
 
@@ -192,6 +194,10 @@ void register_bench(CLI::App& app)
     cmd->add_option("--points", o->points, "Points sampled from a mesh (default 30000; ignored for point clouds)")
         ->check(CLI::Range(std::size_t(2), std::size_t(100000000)));
     cmd->add_option("--csv", o->csv, "Write one row per pose to this CSV file");
+    cmd->add_option("--hierarchy", o->hierarchy, "How the hierarchies are walked: likelihood (default), depth-first, flat")
+        ->check(CLI::IsMember(traversal_names()));
+    cmd->add_option("--budget-us", o->budget_us, "Time budget per query in microseconds (default 0: none)")
+        ->check(CLI::NonNegativeNumber);
     cmd->callback([o] { run_bench(*o); });
 }
 

@@ -40,6 +40,8 @@ struct Collide_options {
     std::string out;
     bool json = false;
     std::string cases;
+    std::string hierarchy = "likelihood";
+    double budget_us = 0.0;
 };
 
 /// The number spelled by the whole of `token`, if it is one.
@@ -181,7 +183,7 @@ void print_summary(const nlohmann::ordered_json& r)
 void run_collide(const Collide_options& o)
 {
     const bool first_hit = o.mode == "first";
-    const PCCD::Intersection_options query_options{.seed = o.seed};
+    const PCCD::Intersection_options query_options = pccd_tool::query_options(o.seed, o.hierarchy, o.budget_us);
     // Everything is read and checked before the (slow) preprocessing.
     std::optional<std::vector<Pose_case>> cases;
     PCCD::Rigid_transform_3<double> pose_a, pose_b;
@@ -274,6 +276,14 @@ void register_collide(CLI::App& app)
                                        "all: points on the intersection curves (intersection_points)")
         ->check(CLI::IsMember({"first", "all"}));
     cmd->add_option("--seed", o->seed, "Seed of the query (default 24301 = 0x5eed)");
+    cmd->add_option("--hierarchy", o->hierarchy,
+                    "How the hierarchies are walked: likelihood (default), depth-first, or flat (the published "
+                    "method, for comparison)")
+        ->check(CLI::IsMember(traversal_names()));
+    cmd->add_option("--budget-us", o->budget_us,
+                    "Time budget per query in microseconds (time-critical: status undecided when it runs out "
+                    "first; default 0: none)")
+        ->check(CLI::NonNegativeNumber);
     auto* out = cmd->add_option("--out", o->out, "Write the intersection points to this file (.ply, .off, .xyz)");
     auto* json = cmd->add_flag("--json", o->json, "Print one JSON object instead of text");
     cmd->add_option("--cases", o->cases,

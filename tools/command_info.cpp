@@ -92,6 +92,13 @@ nlohmann::json describe_file(const std::string& path)
     if (object.domain_radii().size() > 0)
         out["domain"] = {{"median_radius", median_of(object.domain_radii())}};
     out["timings_ms"]["outliers_domain"] = t.outliers;
+    const PCCD::Point_cloud_hierarchy& h = object.hierarchy();
+    std::size_t leaves = 0;
+    for (const auto& node : h.nodes()) leaves += node.is_leaf() ? 1 : 0;
+    out["hierarchy"] = {{"depth", h.height()},          {"nodes", h.nodes().size()},
+                        {"leaves", leaves},             {"leaf_size", h.leaf_size()},
+                        {"reaches", h.has_reach()},     {"largest_reach", h.root().reach},
+                        {"bytes", h.memory_bytes()}};
     return out;
 }
 
@@ -115,7 +122,8 @@ void print_text(const nlohmann::json& info)
                   << "noise         " << info["noise"]["sigma"] << " (" << info["noise"]["sigma_in_spacings"]
                   << " mean spacings)\n"
                   << "outliers      " << info["outliers"]["count"] << " of " << info["outliers"]["input_points"]
-                  << " points left out\n";
+                  << " points left out\n"
+                  << "hierarchy     " << info["hierarchy"].dump() << '\n';
     for (const auto& [name, ms] : info["timings_ms"].items())
         std::cout << "time " << std::left << std::setw(9) << name << ms.get<double>() << " ms\n";
 }

@@ -28,6 +28,30 @@ using pccd_bench::ms_since;
 using pccd_bench::us_since;
 
 /// The methods of the --method option: the two leaf intersector policies, by their name().
+/// The names of --hierarchy (Intersection_options::traversal).
+inline const std::vector<std::string>& traversal_names()
+{
+    static const std::vector<std::string> names{"flat", "depth-first", "likelihood"};
+    return names;
+}
+
+/// The traversal named `name` (one of traversal_names()).
+inline PCCD::Traversal traversal_from_name(const std::string& name)
+{
+    if (name == "flat") return PCCD::Traversal::flat;
+    if (name == "depth-first") return PCCD::Traversal::depth_first;
+    if (name == "likelihood") return PCCD::Traversal::likelihood;
+    throw PCCD::Invalid_input("--hierarchy must be flat, depth-first or likelihood, not \"" + name + "\"");
+}
+
+/// Query options from the command line's --seed, --hierarchy and --budget-us (0: no time limit).
+inline PCCD::Intersection_options query_options(std::uint64_t seed, const std::string& hierarchy, double budget_us)
+{
+    PCCD::Intersection_options options{.seed = seed, .traversal = traversal_from_name(hierarchy)};
+    if (budget_us != 0.0) options.max_time_us = budget_us;
+    return options;
+}
+
 inline const std::vector<std::string>& method_names()
 {
     static const std::vector<std::string> names{PCCD::Interpolation_search::name(), PCCD::Randomized_sampling::name()};

@@ -265,10 +265,13 @@ private:
                           Preprocessing_times timings, const Point_cloud_hierarchy_options& hierarchy_options,
                           Surface_fit fit)
     {
+        // The hierarchy's reach of a point is its domain radius: f is defined only that close to it
+        // (doc/manual/hierarchy.md). Without a domain the hierarchy has no reaches (queries walk it flat).
+        const Eigen::VectorXd reach = domain;
         Geodesic_surface geodesic(Geodesic_distance<K>(cloud, cpsp), weight, normals, domain, fit);
         Euclidean_surface euclidean(Euclidean_distance<K>(cloud), weight, std::move(normals), std::move(domain), fit);
         const auto start = Clock::now();
-        Point_cloud_hierarchy hierarchy(cloud.coordinates(), hierarchy_options);
+        Point_cloud_hierarchy hierarchy(cloud.coordinates(), reach, hierarchy_options);
         timings.hierarchy = ms_since(start);
         return Data{std::move(cloud),       std::move(graph),     std::move(cpsp),
                     sampling_radius,        orientation,          normals_given,

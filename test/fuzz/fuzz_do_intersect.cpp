@@ -268,8 +268,8 @@ void check_result(const PCCD::Intersection_result& r, const Query& q, const Obje
     require(bool(r) == r.intersects, "operator bool differs from intersects");
     require((r.status == PCCD::Intersection_status::intersecting) == r.intersects,
             "status intersecting differs from intersects");
-    if (r.status == PCCD::Intersection_status::budget_exhausted)
-        require(o.max_f_evaluations.has_value(), "budget_exhausted without a budget");
+    if (r.status == PCCD::Intersection_status::undecided)
+        require(o.max_f_evaluations.has_value(), "undecided without a budget");
     if (o.max_f_evaluations) require(c.f_evaluations <= *o.max_f_evaluations, "more f evaluations than the budget");
     // With verified contacts (the default) every point is a projected, refined one, and the
     // verification's steps count as refinement samples; without, the published behaviour.
@@ -328,7 +328,10 @@ void check_result(const PCCD::Intersection_result& r, const Query& q, const Obje
                 "RST reported interpolation-search counters");
         if (!verified) require(c.refinement_samples == 0, "unverified RST refined");
     } else {
-        require(std::isnan(r.closest_estimate), "interpolation search set closest_estimate");
+        // NaN (not estimated), or +infinity when the separation test decided before any evaluation.
+        require(std::isnan(r.closest_estimate) ||
+                    (std::isinf(r.closest_estimate) && c.f_evaluations == 0 && r.status == PCCD::Intersection_status::separate),
+                "interpolation search set closest_estimate");
         // Per role at most `samples` when set, else max_samples for a first hit; intersection_points()
         // takes the full covering count, bounded by the region (samples <= candidate_points below).
         if (q.isearch.samples || q.first_hit) {

@@ -1,8 +1,10 @@
 // PCCD/Hierarchy/Point_cloud_hierarchy.h -- a static bounding-volume hierarchy over the points of a
-// cloud (ALGORITHMS.md section 4, first part): axis-aligned boxes built top-down by median splits of
-// the longest side, leaves of a few points, logarithmic height. The intersection queries use it to
-// restrict their work to the parts of two objects that can touch (overlapping_leaves.h). The
-// per-node subsamples and sphere coverings of section 4 are not stored yet.
+// cloud (doc/algorithms.md "Point cloud hierarchy"): axis-aligned boxes built top-down by median
+// splits of the longest side, leaves of a few points, logarithmic height. Each point may carry a
+// reach (how far from it its surface can be defined, doc/manual/hierarchy.md) and each node the
+// largest reach of its points; the points and reaches are also stored in hierarchy order, so that
+// a leaf's data is contiguous. The intersection queries use it to restrict their work to the parts
+// of two objects that can touch (overlapping_leaves.h, reach_traversal.h).
 #pragma once
 
 #include <algorithm>
@@ -25,9 +27,10 @@ namespace PCCD {
 
 /// Options of Point_cloud_hierarchy.
 struct Point_cloud_hierarchy_options {
-    /// Largest number of points in a leaf (>= 1). Default 16: leaves a few sampling radii wide, so
-    /// that the leaf pairs of two touching objects hug their contact region (doc/manual/intersection.md).
-    std::size_t leaf_size = 16;
+    /// Largest number of points in a leaf (>= 1). Default 8: leaves about two sampling radii wide, so
+    /// that the leaf pairs of two touching objects hug their contact region; measured faster than 16
+    /// and 32 for first-hit queries (doc/benchmarks.md "Point cloud hierarchy").
+    std::size_t leaf_size = 8;
 };
 
 /// A static AABB tree over the points of a cloud.
@@ -50,6 +53,8 @@ public:
         Index count = 0;
         /// Index of the right child; no_child for a leaf. The left child is the next node.
         Index right = no_child;
+        /// The largest reach of the node's points (0 when the hierarchy was built without reaches).
+        double reach = 0.0;
 
         bool is_leaf() const { return right == no_child; }
     };
@@ -64,6 +69,17 @@ public:
     template <class Derived>
     explicit Point_cloud_hierarchy(const Eigen::MatrixBase<Derived>& points,
                                    const Point_cloud_hierarchy_options& options = {})
+        : Point_cloud_hierarchy(points, Eigen::VectorXd(), options)
+    {
+    }
+
+    /// Builds the hierarchy of the 3 x N `points` with a reach per point (`reach(i)` for point i,
+    /// finite and >= 0; empty: every reach is 0). Node::reach is the largest reach of a node's points.
+    /// 	hrows Invalid_input as above, or if `reach` is neither empty nor of size N, or holds a value
+    ///         that is not finite or < 0.
+    template <class Derived>
+    Point_cloud_hierarchy(const Eigen::MatrixBase<Derived>& points, const Eigen::VectorXd& reach,
+                          const Point_cloud_hierarchy_options& options = {})
     {
         static_assert(Derived::RowsAtCompileTime == 3 || Derived::RowsAtCompileTime == Eigen::Dynamic,
                       "Point_cloud_hierarchy needs a 3 x N matrix of points");
@@ -77,11 +93,29 @@ public:
         for (Eigen::Index i = 0; i < coordinates.cols(); ++i)
             if (!internal::all_finite(coordinates.col(i)))
                 throw Invalid_input(internal::concat("point cloud hierarchy: point ", i, " is not finite"));
+        if (reach.size() != 0 && std::size_t(reach.size()) != n)
+            throw Invalid_input(internal::concat("point cloud hierarchy: ", reach.size(), " reaches for ", n, " points"));
+        for (Eigen::Index i = 0; i < reach.size(); ++i)
+            if (!(std::isfinite(reach(i)) && reach(i) >= 0.0))
+                throw Invalid_input(internal::concat("point cloud hierarchy: the reach of point ", i, " (", reach(i),
+                                                     ") must be finite and >= 0"));
         m_leaf_size = options.leaf_size;
+        m_has_reach = reach.size() != 0;
         m_order.resize(n);
         std::iota(m_order.begin(), m_order.end(), Index(0));
         m_nodes.reserve(2 * (n / m_leaf_size + 1));
         build(coordinates, 0, Index(n));
+        // Points and reaches in hierarchy order; node reaches bottom-up (children follow parents).
+        m_ordered.resize(4, Eigen::Index(n));
+        for (std::size_t k = 0; k < n; ++k) {
+            m_ordered.col(Eigen::Index(k)).head<3>() = coordinates.col(m_order[k]);
+            m_ordered(3, Eigen::Index(k)) = reach.size() == 0 ? 0.0 : reach(m_order[k]);
+        }
+        for (std::size_t i = m_nodes.size(); i-- > 0;) {
+            Node& node = m_nodes[i];
+            node.reach = node.is_leaf() ? m_ordered.row(3).segment(node.first, node.count).maxCoeff()
+                                        : std::max(m_nodes[left(Index(i))].reach, m_nodes[node.right].reach);
+        }
     }
 
     /// \name Access
@@ -99,12 +133,21 @@ public:
         const Node& node = m_nodes[i];
         return {m_order.data() + node.first, node.count};
     }
+    /// Position (rows 0-2, the cloud's local frame) and reach (row 3) of the k-th point in
+    /// hierarchy order, i.e. of point order()[k]: a node's points are the columns [first, first + count).
+    const Eigen::Matrix4Xd& ordered_points() const { return m_ordered; }
     std::size_t size() const { return m_order.size(); }
+    /// True when the hierarchy was built with reaches (otherwise every reach is 0).
+    bool has_reach() const { return m_has_reach; }
     bool empty() const { return m_nodes.empty(); }
     std::size_t leaf_size() const { return m_leaf_size; }
     /// Number of levels (1 for a single leaf).
     std::size_t height() const { return m_nodes.empty() ? 0 : height_of(0); }
-    std::size_t memory_bytes() const { return m_nodes.capacity() * sizeof(Node) + m_order.capacity() * sizeof(Index); }
+    std::size_t memory_bytes() const
+    {
+        return m_nodes.capacity() * sizeof(Node) + m_order.capacity() * sizeof(Index) +
+               std::size_t(m_ordered.size()) * sizeof(double);
+    }
     /// @}
 
 private:
@@ -141,7 +184,9 @@ private:
 
     std::vector<Node> m_nodes;
     std::vector<Index> m_order;
-    std::size_t m_leaf_size = 16;
+    Eigen::Matrix4Xd m_ordered;
+    std::size_t m_leaf_size = 8;
+    bool m_has_reach = false;
 };
 
 } // namespace PCCD

@@ -1,5 +1,5 @@
 // PCCD/Hierarchy/overlapping_leaves.h -- simultaneous traversal of two point cloud hierarchies under
-// a relative rigid motion (ALGORITHMS.md section 4): the pairs of leaves whose boxes, the second one
+// a relative rigid motion (doc/manual/hierarchy.md; the flat traversal): the pairs of leaves whose boxes, the second one
 // grown by a margin, may overlap. Depth-first, always descending the larger node; a pair is pruned
 // by the separating-axis test on the six face normals of the two boxes (conservative: a pair the
 // test keeps may still be disjoint, a pair it prunes never overlaps).

@@ -1,5 +1,5 @@
 // PCCD/Intersection/Interpolation_search.h -- the leaf intersector of WSCG05 section 4
-// (ALGORITHMS.md section 6): root bracketing with random points of one cloud and partners from
+// (doc/manual/intersection.md, doc/manual/hierarchy.md): root bracketing with random points of one cloud and partners from
 // their CPSP annulus, interpolation search for the sign change of the other surface's f along the
 // stored shortest path (bisection fallback), giving approximate intersection points (AIPs).
 #pragma once
@@ -11,6 +11,7 @@
 #include <limits>
 #include <optional>
 #include <type_traits>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -20,10 +21,13 @@
 #include <PCCD/Geodesic/Close_pairs_shortest_paths.h>
 #include <PCCD/Geodesic/Paths_on_the_fly.h>
 #include <PCCD/Geodesic/Stored_paths.h>
+#include <PCCD/Hierarchy/reach_traversal.h>
 #include <PCCD/Intersection/Intersection_options.h>
 #include <PCCD/Intersection/Intersection_result.h>
+#include <PCCD/Intersection/internal/Covering_grid.h>
 #include <PCCD/Intersection/internal/Query_state.h>
 #include <PCCD/Intersection/internal/overlap_region.h>
+#include <PCCD/Intersection/internal/reach_region.h>
 #include <PCCD/Random.h>
 #include <PCCD/concepts/PathSource.h>
 
@@ -101,6 +105,16 @@ struct Interpolation_search {
     Partner_choice partner_choice = Partner_choice::predicted;
     /// Where the path of a bracket comes from (default: the stored CPSP paths).
     Path_choice paths = Path_choice::stored;
+    /// Walked first-hit queries (Traversal::depth_first, likelihood): a region point within this
+    /// fraction of rho of a sample already taken is covered and not sampled (a deterministic surfel
+    /// covering, radius r_s = walk_cover rho, in place of the random draws whose count a ln a + c a
+    /// is needed to hit every surfel by chance). In (0, 1]. Default 0.5: the surfel radius of the
+    /// covering formula.
+    double walk_cover = 0.5;
+    /// Walked first-hit queries: random points of each object tested for being within the other's
+    /// reach (and sampled if so) before the walk starts; they find a contact of a deep overlap
+    /// sooner than the walk. Default 8; 0 walks at once.
+    std::size_t probe_draws = 8;
     /// Slack of the reachability test |f_T(p_i)| <= slack rho (>= 1; f is about a distance, so 1
     /// would be exact for a true distance function).
     double lipschitz_slack = 1.5;
@@ -124,6 +138,8 @@ struct Interpolation_search {
         if (!(std::isgreater(annulus_width, 0.0) && std::islessequal(annulus_width, 1.0)))
             throw Invalid_input(internal::concat("interpolation search: annulus_width ", annulus_width, " must be in (0, 1]"));
         if (partner_candidates == 0) throw Invalid_input("interpolation search: partner_candidates must be >= 1");
+        if (!(std::isgreater(walk_cover, 0.0) && std::islessequal(walk_cover, 1.0)))
+            throw Invalid_input(internal::concat("interpolation search: walk_cover ", walk_cover, " must be in (0, 1]"));
         if (!(std::isfinite(lipschitz_slack) && lipschitz_slack >= 1.0))
             throw Invalid_input(internal::concat("interpolation search: lipschitz_slack ", lipschitz_slack, " must be finite and >= 1"));
         if (partner_choice != Partner_choice::predicted && partner_choice != Partner_choice::random)
@@ -144,13 +160,18 @@ struct Interpolation_search {
              double epsilon, internal::Query_state& state, double& closest) const
     {
         closest = std::numeric_limits<double>::quiet_NaN();
+        if (options.traversal != Traversal::flat && state.sink.first_hit() && a.object->hierarchy().has_reach() &&
+            b.object->hierarchy().has_reach()) {
+            run_traversal(a, b, options, epsilon, state);
+            return;
+        }
         // The smaller object's points are sampled first; the second role runs only if needed.
         if (a.size() <= b.size()) {
-            run_role(a, b, options.region, epsilon, state);
-            if (options.symmetric && !state.stop()) run_role(b, a, options.region, epsilon, state);
+            run_role(a, b, options, epsilon, state);
+            if (options.symmetric && !state.stop()) run_role(b, a, options, epsilon, state);
         } else {
-            run_role(b, a, options.region, epsilon, state);
-            if (options.symmetric && !state.stop()) run_role(a, b, options.region, epsilon, state);
+            run_role(b, a, options, epsilon, state);
+            if (options.symmetric && !state.stop()) run_role(a, b, options, epsilon, state);
         }
     }
 
@@ -167,85 +188,185 @@ struct Interpolation_search {
         return wanted >= double(region_points) ? region_points : std::size_t(std::ceil(wanted));
     }
 
-    /// One role: the points of `sampled` in the region (those within `tested`'s leaf boxes grown by
-    /// its kernel support) are tested against the surface of `tested`. AIPs go to state.sink (world
-    /// coordinates); returns when the sink is done, the budget is spent or the samples are
+    /// One role: the points of `sampled` in the region (flat traversal: those within `tested`'s leaf
+    /// boxes grown by its kernel support; otherwise those within the reach of `tested`'s points,
+    /// where f_T can be defined) are tested against the surface of `tested`. AIPs go to state.sink
+    /// (world coordinates); returns when the sink is done, the budget is spent or the samples are
     /// exhausted. \pre epsilon > 0
     template <class S, class T>
     void run_role(const internal::Posed_object<S>& sampled, const internal::Posed_object<T>& tested,
-                  Overlap_region region, double epsilon, internal::Query_state& state) const
+                  const Intersection_options& options, double epsilon, internal::Query_state& state) const
     {
-        const Close_pairs_shortest_paths& cpsp = sampled.object->cpsp();
-        if (paths == Path_choice::stored) {
-            run_role_with(sampled, tested, region, epsilon, state, Stored_paths(cpsp));
+        const Rigid_transform_3<double> s_to_t = tested.from_world * sampled.to_world;
+        const Point_cloud_hierarchy& hs = sampled.object->hierarchy();
+        const Point_cloud_hierarchy& ht = tested.object->hierarchy();
+        if (options.traversal == Traversal::flat || !hs.has_reach() || !ht.has_reach()) {
+            const auto position = [&sampled](std::uint32_t i) { return sampled.position(i); };
+            internal::Region_sampler<decltype(position)> sampler(hs, ht, s_to_t, tested.support_radius(), options.region,
+                                                                 position, state.counters);
+            run_role_paths(sampled, tested, sampler, epsilon, state);
         } else {
-            // The map's distances are floats: a bound a little above it keeps its farthest targets.
-            const Proximity_graph& graph = sampled.object->graph();
-            const auto& coordinates = sampled.object->cloud().coordinates();
-            using FT = typename std::remove_cvref_t<decltype(coordinates)>::Scalar;
-            const Paths_on_the_fly<Proximity_graph::Graph, Proximity_graph::Length_map, Proximity_graph::Virtual_map, FT>
-                source(graph.graph(), graph.length_map(), coordinates, {.bound = double(cpsp.bound()) * (1.0 + 1e-6)},
-                       graph.virtual_map());
-            run_role_with(sampled, tested, region, epsilon, state, source);
+            internal::Reach_region_sampler sampler(hs, ht, s_to_t, Reach_rule{.scale = 1.0, .cap = tested.support_radius()},
+                                                   state.counters);
+            run_role_paths(sampled, tested, sampler, epsilon, state);
         }
     }
 
 private:
-    /// run_role() with the paths of brackets read from `path_source`.
-    template <class S, class T, PathSource Paths>
-    void run_role_with(const internal::Posed_object<S>& sampled, const internal::Posed_object<T>& tested,
-                       Overlap_region region, double epsilon, internal::Query_state& state,
-                       const Paths& path_source) const
+    /// First-hit queries under the depth_first and likelihood traversals: the two hierarchies are
+    /// walked together (for_each_leaf_pair_within_reach) and, at each leaf pair, the points of
+    /// either leaf within the reach of the other leaf's points are sampled at once in both roles
+    /// (each point once per role; per role at most `samples` or max_samples). The walk stops at the
+    /// first verified contact, when the budget is spent, or when both roles have their samples.
+    template <class A, class B>
+    void run_traversal(const internal::Posed_object<A>& a, const internal::Posed_object<B>& b,
+                       const Intersection_options& options, double epsilon, internal::Query_state& state) const
     {
-        const Rigid_transform_3<double> s_to_t = tested.from_world * sampled.to_world;
-        const Close_pairs_shortest_paths& cpsp = sampled.object->cpsp();
-        const double rho = annulus_outer * cpsp.bound();
-        const double inner = rho * (1.0 - annulus_width);
-        const auto position = [&sampled](std::uint32_t i) { return sampled.position(i); };
-        internal::Region_sampler<decltype(position)> region_sampler(sampled.object->hierarchy(),
-                                                                    tested.object->hierarchy(), s_to_t,
-                                                                    tested.support_radius(), region, position,
-                                                                    state.counters);
-        std::vector<std::uint32_t> path;
-        std::vector<std::pair<double, std::uint32_t>> ranked;
-        const auto evaluate_point = [&](std::uint32_t i) {
-            return state.evaluate_local(tested, s_to_t.transform_point(sampled.position(i)));
-        };
-        const double r = sampled.sampling_radius();
-        const double noise_band = sampled.noise_estimate();
-        const double partner_depth = 0.5 * tested.sampling_radius();
-        std::uint32_t i = 0;
-        while (!state.stop()) {
-            // n = a ln a + c a samples of the region (an estimate until the region size is known).
-            const std::size_t drawn = region_sampler.accepted();
-            // The caps hold from the first draw (the region-size estimate below waits for 64 draws):
-            // a fixed count, or max_samples for first-hit queries.
-            if (samples && drawn >= *samples) return;
-            if (!samples && state.sink.first_hit() && drawn >= max_samples) return;
-            if (drawn >= 64 || region_sampler.region_size_known()) {
-                const std::size_t size = std::size_t(std::ceil(region_sampler.region_size()));
-                if (drawn >= sample_count(size, r, rho, state.sink.first_hit())) return;
+        using Index = Point_cloud_hierarchy::Index;
+        const bool use_a = options.symmetric || a.size() <= b.size();
+        const bool use_b = options.symmetric || a.size() > b.size();
+        // The covering bounds the samples; max_samples (or a fixed count) still caps them.
+        const std::size_t cap = samples ? *samples : max_samples;
+        constexpr double tiny = 1e-300; // a covering radius must be > 0 for the grid
+        const Point_cloud_hierarchy& ha = a.object->hierarchy();
+        const Point_cloud_hierarchy& hb = b.object->hierarchy();
+        const Reach_rule rule_a{.scale = 1.0, .cap = a.support_radius()};
+        const Reach_rule rule_b{.scale = 1.0, .cap = b.support_radius()};
+        with_paths(a, [&](const auto& source_a) {
+            with_paths(b, [&](const auto& source_b) {
+                Role<A, B, std::remove_cvref_t<decltype(source_a)>> role_a{*this, a, b, source_a, state, epsilon};
+                Role<B, A, std::remove_cvref_t<decltype(source_b)>> role_b{*this, b, a, source_b, state, epsilon};
+                std::unordered_set<std::uint32_t> done_a, done_b;
+                internal::Covering_grid cover_a(std::max(walk_cover * role_a.rho, tiny));
+                internal::Covering_grid cover_b(std::max(walk_cover * role_b.rho, tiny));
+                const auto active = [&] { return (use_a && role_a.taken < cap) || (use_b && role_b.taken < cap); };
+                // A deep overlap has contacts all over: a few random points within reach find one
+                // sooner than the walk, which goes to the leaves first.
+                for (std::size_t k = 0; k < probe_draws && !state.stop(); ++k) {
+                    if (use_a && !probe(ha, hb, rule_b, cap, done_a, cover_a, role_a)) return;
+                    if (use_b && !state.stop() && !probe(hb, ha, rule_a, cap, done_b, cover_b, role_b)) return;
+                }
+                if (state.stop()) return;
+                const Reach_counters c = for_each_leaf_pair_within_reach(
+                    ha, hb, role_a.s_to_t, rule_a, rule_b,
+                    [&](Index la, Index lb) {
+                        if (state.out_of_budget()) return false;
+                        if (use_a && !sample_leaf(ha, la, hb, lb, rule_b, cap, done_a, cover_a, role_a)) return false;
+                        if (use_b && !sample_leaf(hb, lb, ha, la, rule_a, cap, done_b, cover_b, role_b)) return false;
+                        return active();
+                    },
+                    options.traversal == Traversal::likelihood, true);
+                state.counters.node_pairs += c.node_pairs;
+                state.counters.leaf_pairs += c.leaf_pairs;
+            });
+        });
+    }
+
+    /// One random point of s (uniform, with replacement): sampled in `role` when it lies within the
+    /// reach of t and is neither sampled nor covered yet. Returns false when the query must stop.
+    template <class Role_type>
+    static bool probe(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t, const Reach_rule& rule_t,
+                      std::size_t cap, std::unordered_set<std::uint32_t>& done, internal::Covering_grid& cover,
+                      Role_type& role)
+    {
+        if (role.taken >= cap || s.empty()) return true;
+        const auto k = Eigen::Index(uniform_index(role.state.engine, s.size()));
+        const Eigen::Vector3d local = s.ordered_points().col(k).head<3>();
+        if (!within_reach(t, role.s_to_t.transform_point(local), rule_t)) return true;
+        const std::uint32_t index = s.order()[std::size_t(k)];
+        if (cover.covers(local) || !done.insert(index).second) return true;
+        cover.add(local);
+        ++role.state.counters.candidate_points;
+        return role.sample(index) && !role.state.stop();
+    }
+
+    /// Samples, in `role`, the points of leaf `ls` of s within the reach of leaf `lt` of t that the
+    /// role has not sampled yet, up to `cap` samples. Returns false when the query must stop.
+    template <class Role_type>
+    static bool sample_leaf(const Point_cloud_hierarchy& s, Point_cloud_hierarchy::Index ls,
+                            const Point_cloud_hierarchy& t, Point_cloud_hierarchy::Index lt, const Reach_rule& rule_t,
+                            std::size_t cap, std::unordered_set<std::uint32_t>& done, internal::Covering_grid& cover,
+                            Role_type& role)
+    {
+        const auto& ns = s.node(ls);
+        const auto& nt = t.node(lt);
+        const Eigen::Matrix4Xd& ps = s.ordered_points();
+        const Eigen::Matrix4Xd& pt = t.ordered_points();
+        for (auto k = ns.first; k < ns.first + ns.count; ++k) {
+            if (role.taken >= cap) return true;
+            const Eigen::Vector3d q = role.s_to_t.transform_point(Eigen::Vector3d(ps.col(k).head<3>()));
+            bool inside = false;
+            for (auto m = nt.first; m < nt.first + nt.count && !inside; ++m) {
+                const double reach = rule_t(pt(3, m));
+                inside = (pt.col(m).head<3>() - q).squaredNorm() <= reach * reach;
             }
-            if (!region_sampler.next(state.engine, i)) return;
+            if (!inside || !done.insert(s.order()[k]).second) continue;
+            ++role.state.counters.candidate_points;
+            const Eigen::Vector3d local = ps.col(k).head<3>();
+            if (cover.covers(local)) continue;
+            cover.add(local);
+            if (!role.sample(s.order()[k]) || role.state.stop()) return false;
+        }
+        return true;
+    }
+
+    /// run_role() with its region sampler: the paths of brackets from the stored map or on the fly.
+    template <class S, class T, class Sampler>
+    void run_role_paths(const internal::Posed_object<S>& sampled, const internal::Posed_object<T>& tested,
+                        Sampler& sampler, double epsilon, internal::Query_state& state) const
+    {
+        with_paths(sampled, [&](const auto& source) { run_role_with(sampled, tested, sampler, epsilon, state, source); });
+    }
+
+    /// One role's state: the sampled object S, the tested surface f_T, and what a sample needs
+    /// (annulus, partner buffers, the path source).
+    template <class S, class T, class Paths>
+    struct Role {
+        const Interpolation_search& policy;
+        const internal::Posed_object<S>& sampled;
+        const internal::Posed_object<T>& tested;
+        const Paths& path_source;
+        internal::Query_state& state;
+        double epsilon;
+        Rigid_transform_3<double> s_to_t = tested.from_world * sampled.to_world;
+        const Close_pairs_shortest_paths& cpsp = sampled.object->cpsp();
+        double rho = policy.annulus_outer * cpsp.bound();
+        double inner = rho * (1.0 - policy.annulus_width);
+        double noise_band = sampled.noise_estimate();
+        double partner_depth = 0.5 * tested.sampling_radius();
+        std::size_t taken = 0; // samples of this role
+        std::vector<std::uint32_t> path{};
+        std::vector<std::pair<double, std::uint32_t>> ranked{};
+
+        Surface_evaluation evaluate_point(std::uint32_t i)
+        {
+            return state.evaluate_local(tested, s_to_t.transform_point(sampled.position(i)));
+        }
+
+        /// Steps 2 and 3 for the sample p_i: a candidate contact, or a bracket and its search.
+        /// Returns false when the query must stop (budget spent).
+        bool sample(std::uint32_t i)
+        {
+            ++taken;
             ++state.counters.samples;
             const Eigen::Vector3d pi_world = sampled.to_world.transform_point(sampled.position(i));
             // intersection_points(): a sample next to a point already found adds nothing.
-            if (state.sink.near(pi_world, state.sink.spacing())) continue;
+            if (state.sink.near(pi_world, state.sink.spacing())) return true;
             const Surface_evaluation ei = evaluate_point(i);
-            if (!ei.defined()) continue;
+            if (!ei.defined()) return true;
             const double di = ei.value;
             // With verified contacts, a sample as close to the tested surface as the noise keeps it
             // from its own is a candidate too: coincident surfaces have no sign change to bracket.
             if (std::abs(di) <= epsilon || (state.verifier && std::abs(di) <= epsilon + noise_band)) {
-                if (state.offer(aip(pi_world)) || state.stop() || std::abs(di) <= epsilon) continue;
+                if (state.offer(aip(pi_world)) || state.stop() || std::abs(di) <= epsilon) return true;
             }
-            if (std::abs(di) > lipschitz_slack * rho) continue;
+            if (std::abs(di) > policy.lipschitz_slack * rho) return true;
             ++state.counters.brackets_tried;
             const auto [first, last] = annulus_range(cpsp, i, inner, rho);
-            if (first >= last) continue;
-            choose_partners(sampled, s_to_t, cpsp, i, first, last, ei, partner_depth, ranked, state);
+            if (first >= last) return true;
+            policy.choose_partners(sampled, s_to_t, cpsp, i, first, last, ei, partner_depth, ranked, state);
             for (const auto& [score, entry] : ranked) {
-                if (state.out_of_budget()) return;
+                if (state.out_of_budget()) return false;
                 const std::uint32_t j = cpsp.targets(i)[entry];
                 ++state.counters.partner_candidates;
                 const Surface_evaluation ej = evaluate_point(j);
@@ -257,10 +378,54 @@ private:
                 if ((di < 0.0) == (ej.value < 0.0)) continue;
                 ++state.counters.brackets_found;
                 if (!path_source.path(i, j, path)) break; // no path within the bound (on the fly)
-                if (auto aip = search_path(sampled, tested, s_to_t, path, di, ej.value, epsilon, state))
-                    state.offer(*aip);
+                if (auto found = search_path(sampled, tested, s_to_t, path, di, ej.value, epsilon, state))
+                    state.offer(*found);
                 break;
             }
+            return true;
+        }
+    };
+
+    /// Calls `body(path_source)` with the path source of `sampled` that `paths` selects.
+    template <class S, class Body>
+    void with_paths(const internal::Posed_object<S>& sampled, const Body& body) const
+    {
+        const Close_pairs_shortest_paths& cpsp = sampled.object->cpsp();
+        if (paths == Path_choice::stored) {
+            body(Stored_paths(cpsp));
+        } else {
+            // The map's distances are floats: a bound a little above it keeps its farthest targets.
+            const Proximity_graph& graph = sampled.object->graph();
+            const auto& coordinates = sampled.object->cloud().coordinates();
+            using FT = typename std::remove_cvref_t<decltype(coordinates)>::Scalar;
+            body(Paths_on_the_fly<Proximity_graph::Graph, Proximity_graph::Length_map, Proximity_graph::Virtual_map, FT>(
+                graph.graph(), graph.length_map(), coordinates, {.bound = double(cpsp.bound()) * (1.0 + 1e-6)},
+                graph.virtual_map()));
+        }
+    }
+
+    /// run_role() with the paths of brackets read from `path_source`.
+    template <class S, class T, class Sampler, PathSource Paths>
+    void run_role_with(const internal::Posed_object<S>& sampled, const internal::Posed_object<T>& tested,
+                       Sampler& region_sampler, double epsilon, internal::Query_state& state,
+                       const Paths& path_source) const
+    {
+        Role<S, T, Paths> role{*this, sampled, tested, path_source, state, epsilon};
+        const double r = sampled.sampling_radius();
+        std::uint32_t i = 0;
+        while (!state.stop()) {
+            // n = a ln a + c a samples of the region (an estimate until the region size is known).
+            const std::size_t drawn = region_sampler.accepted();
+            // The caps hold from the first draw (the region-size estimate below waits for 64 draws):
+            // a fixed count, or max_samples for first-hit queries.
+            if (samples && drawn >= *samples) return;
+            if (!samples && state.sink.first_hit() && drawn >= max_samples) return;
+            if (drawn >= 64 || region_sampler.region_size_known()) {
+                const std::size_t size = std::size_t(std::ceil(region_sampler.region_size()));
+                if (drawn >= sample_count(size, r, role.rho, state.sink.first_hit())) return;
+            }
+            if (!region_sampler.next(state.engine, i)) return;
+            if (!role.sample(i)) return;
         }
     }
 

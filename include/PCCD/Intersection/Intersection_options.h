@@ -1,5 +1,6 @@
 // PCCD/Intersection/Intersection_options.h -- the run-time knobs shared by every intersection query
-// (ALGORITHMS.md sections 5 and 6): seed, tolerance, region, refinement, output density, budget.
+// (doc/manual/intersection.md "Options"): seed, tolerance, region, traversal, refinement, output
+// density, budgets.
 // The leaf intersector policies (Interpolation_search.h, Randomized_sampling.h) carry their own.
 #pragma once
 
@@ -22,7 +23,24 @@ enum class Overlap_region : std::uint8_t {
     object_boxes = 1,
 };
 
-/// How the points of intersection_points() are refined (ALGORITHMS.md section 6.3).
+/// How a query walks the two objects' point cloud hierarchies (doc/manual/hierarchy.md).
+enum class Traversal : std::uint8_t {
+    /// The published method: the region is what Overlap_region says (boxes grown by the kernel's
+    /// support), drawn uniformly; no separation test before f is evaluated. Kept for comparison.
+    flat = 0,
+    /// The hierarchies are walked depth-first with each point's reach (where its surface can be
+    /// defined): a pair of objects whose points are nowhere within the sum of their reaches
+    /// (scaled by contact_core for verified contacts) is `separate` with no f evaluation, and each
+    /// role samples only the points where the other surface can be defined.
+    depth_first = 1,
+    /// As depth_first, but of the two children of a node, the one whose box centre lies nearer the
+    /// other node's box centre is walked first: the estimated likelihood of a contact is the
+    /// closeness of the two boxes, so that a first-hit query reaches the touching parts early.
+    /// Measured fastest (doc/benchmarks.md "Point cloud hierarchy"). Default.
+    likelihood = 2,
+};
+
+/// How the points of intersection_points() are refined (doc/manual/intersection.md, "Refinement").
 enum class Refinement : std::uint8_t {
     /// Return the approximate intersection points (AIPs) as found.
     none = 0,
@@ -47,8 +65,11 @@ struct Intersection_options {
     /// fraction of the smaller sampling radius r (Interpolation_search and the refinement: 0.05 r;
     /// Randomized_sampling: its own default, see there). When set: finite and > 0.
     std::optional<double> epsilon = std::nullopt;
-    /// The region searched (default: overlapping hierarchy leaves).
+    /// The region searched by the flat traversal (default: overlapping hierarchy leaves).
     Overlap_region region = Overlap_region::leaf_boxes;
+    /// How the hierarchies are walked (default: likelihood; flat is the published method). Objects
+    /// whose hierarchy was built without reaches are always walked flat.
+    Traversal traversal = Traversal::likelihood;
     /// Refinement of the points of intersection_points() when contacts are not verified
     /// (verify_contacts = false; verified points are already projected onto both surfaces).
     /// do_intersect() never refines: it answers at the first candidate. Default: projection.
@@ -60,9 +81,16 @@ struct Intersection_options {
     /// Largest number of refinement samples per point with Refinement::sampling (default 64).
     std::size_t refinement_samples = 64;
     /// Budget: the query stops once it has evaluated f this many times, with
-    /// Intersection_status::budget_exhausted if nothing was found. Unset (default): no budget. When
+    /// Intersection_status::undecided if nothing was found. Unset (default): no budget. When
     /// set: >= 1.
     std::optional<std::size_t> max_f_evaluations = std::nullopt;
+    /// Time budget in microseconds (time-critical queries): the query stops once this much wall
+    /// time (steady clock) has passed since it started, with Intersection_status::undecided if
+    /// nothing was found; an answer found in time stands. Checked at every leaf pair and f
+    /// evaluation, so a query may overrun by about one leaf pair's work. Unlike the other options,
+    /// the answer then depends on the machine's speed. Unset (default): no limit. When set: finite
+    /// and > 0.
+    std::optional<double> max_time_us = std::nullopt;
     /// Sample both roles (points of A tested against f_B, then points of B against f_A). Default
     /// true; false samples only the object with fewer candidate points.
     bool symmetric = true;
@@ -104,10 +132,14 @@ inline void check_options(const Intersection_options& o, const char* function)
         throw Invalid_input(concat(function, ": contact_core ", o.contact_core, " must lie in (0, 1]"));
     if (o.max_f_evaluations && *o.max_f_evaluations == 0)
         throw Invalid_input(concat(function, ": a budget of zero f evaluations (max_f_evaluations = 0) cannot answer; leave it unset for no budget"));
+    if (o.max_time_us && !(std::isfinite(*o.max_time_us) && *o.max_time_us > 0.0))
+        throw Invalid_input(concat(function, ": max_time_us ", *o.max_time_us, " must be finite and > 0 (leave it unset for no time limit)"));
     if (o.refinement == Refinement::sampling && o.refinement_samples == 0)
         throw Invalid_input(concat(function, ": refinement_samples must be >= 1 with Refinement::sampling"));
     if (o.region != Overlap_region::leaf_boxes && o.region != Overlap_region::object_boxes)
         throw Invalid_input(concat(function, ": unknown overlap region"));
+    if (o.traversal != Traversal::flat && o.traversal != Traversal::depth_first && o.traversal != Traversal::likelihood)
+        throw Invalid_input(concat(function, ": unknown traversal"));
     if (o.refinement != Refinement::none && o.refinement != Refinement::sampling &&
         o.refinement != Refinement::projection)
         throw Invalid_input(concat(function, ": unknown refinement"));

@@ -1,6 +1,6 @@
-// PCCD/Intersection/Intersection_result.h -- what an intersection query returns (DESIGN.md, "Results
-// carry their evidence"): the answer, the intersection points found, and the counters the papers'
-// evaluation figures are made of (ALGORITHMS.md sections 5 and 6).
+// PCCD/Intersection/Intersection_result.h -- what an intersection query returns
+// (doc/manual/intersection.md, "The result"): answers carry their evidence: the answer, the intersection points found, and the counters the papers'
+// evaluation figures are made of (doc/benchmarks.md).
 #pragma once
 
 #include <cstddef>
@@ -14,7 +14,7 @@ namespace PCCD {
 
 /// How a point of an intersection result was obtained.
 enum class Intersection_point_kind : std::uint8_t {
-    /// An approximate intersection point (AIP, ALGORITHMS.md section 6.2): on the graph edge of one
+    /// An approximate intersection point (AIP, doc/manual/intersection.md): on the graph edge of one
     /// cloud where the other surface's f changes sign, linearly interpolated between its two ends.
     approximate = 0,
     /// Refined (section 6.3) or verified: a point where both |f_A| and |f_B| are below the refinement
@@ -40,9 +40,12 @@ enum class Intersection_status : std::uint8_t {
     intersecting = 0,
     /// No intersection found after the whole sampling the options ask for.
     separate = 1,
-    /// The evaluation budget ran out before an intersection was found: the answer "no" is not
-    /// backed by the full sampling.
-    budget_exhausted = 2,
+    /// A budget (f evaluations or time, Intersection_options::max_f_evaluations / max_time_us) ran
+    /// out before an intersection was found: the query cannot say "no"; the counters tell how far it
+    /// got. Never reported as separate.
+    undecided = 2,
+    /// The former name of `undecided`.
+    budget_exhausted = undecided,
 };
 
 inline const char* to_string(Intersection_status status)
@@ -50,7 +53,7 @@ inline const char* to_string(Intersection_status status)
     switch (status) {
     case Intersection_status::intersecting: return "intersecting";
     case Intersection_status::separate: return "separate";
-    case Intersection_status::budget_exhausted: return "budget_exhausted";
+    case Intersection_status::undecided: return "undecided";
     }
     return "unknown";
 }
@@ -117,7 +120,10 @@ struct Intersection_result {
     std::vector<Intersection_point> points;
     Intersection_counters counters;
     /// Randomized sampling only: the smallest max(|f_A|, |f_B|) over its samples (an estimate of how
-    /// far the surfaces are from touching); +infinity when no sample had both defined.
+    /// far the surfaces are from touching); +infinity when no sample had both defined. For every
+    /// policy: +infinity when the separation test of the hierarchy traversals decided (no point can
+    /// lie within both surfaces' domains; doc/manual/hierarchy.md); otherwise NaN for the
+    /// interpolation search, which makes no estimate.
     double closest_estimate = 0.0;
 
     explicit operator bool() const { return intersects; }

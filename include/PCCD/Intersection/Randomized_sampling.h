@@ -1,5 +1,5 @@
 // PCCD/Intersection/Randomized_sampling.h -- the randomized sampling technique, RST (EG04; the
-// baseline of WSCG05; ALGORITHMS.md section 5): random points in the overlap region, an
+// baseline of WSCG05; doc/manual/intersection.md): random points in the overlap region, an
 // intersection where both |f_A| and |f_B| are below epsilon.
 #pragma once
 

@@ -1,15 +1,18 @@
 // PCCD/Intersection/do_intersect.h -- the public entry points of the stochastic intersection
-// (ALGORITHMS.md sections 5 and 6; DESIGN.md "query"): do_intersect() answers at the first
+// (doc/manual/intersection.md; the walk of doc/manual/hierarchy.md): do_intersect() answers at the first
 // intersection found, intersection_points() samples the intersection curves at a chosen spacing.
 // Objects are preprocessed once (Point_cloud_object) and posed by rigid transforms per query.
 #pragma once
 
 #include <algorithm>
+#include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <vector>
 
 #include <PCCD/Error.h>
+#include <PCCD/Hierarchy/reach_traversal.h>
 #include <PCCD/Intersection/Interpolation_search.h>
 #include <PCCD/Intersection/Intersection_options.h>
 #include <PCCD/Intersection/Intersection_result.h>
@@ -17,10 +20,36 @@
 #include <PCCD/Intersection/internal/Query_state.h>
 #include <PCCD/Intersection/refinement.h>
 #include <PCCD/Rigid_transform_3.h>
+#include <PCCD/internal/timing.h>
 #include <PCCD/concepts/CollisionObject.h>
 
 namespace PCCD {
 namespace internal {
+
+/// False when no verified contact can exist, decided on the hierarchies alone (no f evaluation): a
+/// verified contact x lies within contact_core D_p of its nearest point p of A and within
+/// contact_core D_q of its nearest point q of B, and within the kernel's support of both, so A and
+/// B must have points p, q with |p - q| <= min(c D_p, R_A) + min(c D_q, R_B). Only the boxes are
+/// compared here (the walk stops at the first leaf pair whose grown boxes overlap: comparing points
+/// measured slower than leaving them to the traversal), so false is exact and true is "maybe".
+/// Without verification, or for the flat traversal or hierarchies without reaches, true.
+template <class A, class B>
+bool surfaces_may_touch(const Posed_object<A>& pa, const Posed_object<B>& pb, const Intersection_options& options,
+                        Intersection_counters& counters)
+{
+    const Point_cloud_hierarchy& ha = pa.object->hierarchy();
+    const Point_cloud_hierarchy& hb = pb.object->hierarchy();
+    if (options.traversal == Traversal::flat || !options.verify_contacts || !ha.has_reach() || !hb.has_reach())
+        return true;
+    Reach_counters c;
+    const bool meet = reaches_meet(ha, hb, pb.from_world * pa.to_world,
+                                   Reach_rule{.scale = options.contact_core, .cap = pa.support_radius()},
+                                   Reach_rule{.scale = options.contact_core, .cap = pb.support_radius()}, c,
+                                   0);
+    counters.node_pairs += c.node_pairs;
+    counters.leaf_pairs += c.leaf_pairs;
+    return meet;
+}
 
 template <class A, class B, class Policy>
 Intersection_result run_query(const A& a, const Rigid_transform_3<double>& pose_a, const B& b,
@@ -38,7 +67,17 @@ Intersection_result run_query(const A& a, const Rigid_transform_3<double>& pose_
         throw Invalid_input(concat(function, ": the automatic epsilon ", epsilon, " is not positive"));
 
     Intersection_result result;
+    const auto start = Steady_clock::now();
+    // The separation test first: a "no" it proves needs no query state at all.
+    if (!surfaces_may_touch(pa, pb, options, result.counters)) {
+        result.status = Intersection_status::separate;
+        result.closest_estimate = std::numeric_limits<double>::infinity(); // no point lies in both domains
+        return result;
+    }
     Query_state state(options.seed, options.max_f_evaluations, first_hit, spacing, result.points);
+    state.counters = result.counters;
+    if (options.max_time_us)
+        state.deadline = start + std::chrono::nanoseconds(std::int64_t(*options.max_time_us * 1e3));
     if (options.verify_contacts) {
         const double tolerance = options.contact_tolerance.value_or(0.05 * r_min);
         const double reach = 2.0 * std::max(pa.sampling_radius(), pb.sampling_radius());
@@ -63,7 +102,7 @@ Intersection_result run_query(const A& a, const Rigid_transform_3<double>& pose_
     }
     result.intersects = !result.points.empty();
     result.status = result.intersects  ? Intersection_status::intersecting
-                    : state.budget_hit ? Intersection_status::budget_exhausted
+                    : state.budget_hit ? Intersection_status::undecided
                                        : Intersection_status::separate;
     result.counters = state.counters;
     return result;

@@ -1,5 +1,5 @@
-// PCCD/Intersection/refinement.h -- refinement of an approximate intersection point (ALGORITHMS.md
-// section 6.3): WSCG05's random sampling in the intersection sphere around the AIP, and a
+// PCCD/Intersection/refinement.h -- refinement of an approximate intersection point
+// (doc/manual/intersection.md, "Refinement"): WSCG05's random sampling in the intersection sphere around the AIP, and a
 // Gauss-Newton projection onto f_A = f_B = 0. Both work on world points and count every evaluation.
 #pragma once
 

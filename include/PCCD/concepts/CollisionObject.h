@@ -33,7 +33,11 @@ namespace PCCD {
 /// - `o.graph()`: its PCCD::Proximity_graph (read by Path_choice::on_the_fly);
 /// - `o.cpsp()`: the PCCD::Close_pairs_shortest_paths map of that graph (annulus, targets,
 ///   distances, bound and, through Stored_paths, the stored paths);
-/// - `o.hierarchy()`: a PCCD::Point_cloud_hierarchy over its points;
+/// - `o.hierarchy()`: a PCCD::Point_cloud_hierarchy over its points; when it has reaches
+///   (Point_cloud_hierarchy::has_reach), the reach of each point must be its domain radius: f must
+///   be undefined (or outside_domain) at every x farther than reach_i from its nearest point p_i.
+///   The hierarchy traversals rely on it to declare objects separate without evaluating f; a
+///   hierarchy without reaches is walked flat;
 /// - `o.sampling_radius()`: r(P), convertible to double;
 /// - `o.noise_estimate()`: the estimated noise level sigma of its points, convertible to double (0
 ///   for a clean cloud is fine), which widens the band of candidate contacts of the interpolation

@@ -17,6 +17,7 @@
 #include <PCCD/Random.h>
 #include <PCCD/Rigid_transform_3.h>
 #include <PCCD/Surface/WLS_surface.h>
+#include <PCCD/internal/timing.h>
 
 namespace PCCD::internal {
 
@@ -117,6 +118,8 @@ struct Query_state {
 
     Intersection_counters counters;
     std::optional<std::size_t> budget;
+    /// Time budget: the query stops once the steady clock passes it.
+    std::optional<Steady_clock::time_point> deadline;
     bool budget_hit = false;
     Random_engine engine;
     Point_sink sink;
@@ -133,6 +136,7 @@ struct Query_state {
     bool out_of_budget()
     {
         if (budget && counters.f_evaluations >= *budget) budget_hit = true;
+        if (deadline && !budget_hit && Steady_clock::now() >= *deadline) budget_hit = true;
         return budget_hit;
     }
     /// The query should stop: first hit found or budget spent.

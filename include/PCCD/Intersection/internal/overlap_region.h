@@ -1,5 +1,5 @@
 // PCCD/Intersection/internal/overlap_region.h -- the part of the overlap of two objects a query
-// searches (ALGORITHMS.md section 6, "Box(A,B)"): the points of one object that lie in the other's
+// searches (doc/manual/intersection.md, WSCG05's "Box(A,B)"; the flat traversal): the points of one object that lie in the other's
 // leaf boxes (or root box) grown by a margin, and the boxes where randomized sampling draws.
 #pragma once
 

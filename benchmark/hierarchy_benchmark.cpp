@@ -1,0 +1,227 @@
+// benchmark/hierarchy_benchmark.cpp -- first-hit query time of PCCD's hierarchy traversals against
+// FCL on the source mesh, per model, over the benchmark poses (doc/manual/sampling.md), and the
+// scale figure (the same poses on a resampled cloud of another size). Results and the commands are
+// in doc/benchmarks.md "Point cloud hierarchy".
+//
+//   hierarchy_benchmark [--models bunny00.off,elephant.off,eight.off] [--points 30000]
+//                       [--rotations 50] [--repetitions 3] [--seed 1]
+//                       [--traversals flat,depth_first,likelihood] [--csv OUT]
+//
+// Peak memory (getrusage) is printed after each model's preprocessing. Per model: the mesh is normalized into [-1, 1]^3, FCL's OBBRSS hierarchy is built on it, and a
+// cloud of --points points is sampled by area and preprocessed with default options. Per pose:
+// FCL's collide() and do_intersect() per traversal, each the median of --repetitions runs, on this
+// thread's CPU clock (the machine is shared; wall time is noisier). Printed per model: mean and
+// median per distance, mean over d in [0, 3] and over the near misses d in [1, 2.25], their ratio to
+// FCL's, p99, and how often each traversal's verdict differs from the flat traversal's and from FCL's.
+#include "collision_baselines.h"
+
+#include <common/csv.h>
+#include <common/statistics.h>
+#include <common/timing.h>
+
+#include <PCCD/IO/read_triangle_mesh.h>
+#include <PCCD/Intersection/do_intersect.h>
+#include <PCCD/Point_cloud_object.h>
+#include <PCCD/Random.h>
+#include <PCCD/Sampling/Similarity_3.h>
+#include <PCCD/Sampling/pose_generator.h>
+#include <PCCD/Sampling/sample_triangle_mesh.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <ctime>
+#include <sys/resource.h>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+struct Arguments {
+    std::vector<std::string> models{"bunny00.off", "elephant.off", "eight.off"};
+    std::size_t points = 30000;
+    std::size_t rotations = 50;
+    int repetitions = 3;
+    std::uint64_t seed = 1;
+    std::vector<std::string> traversals{"flat", "depth_first", "likelihood"};
+    std::string csv;
+};
+
+std::vector<std::string> split(const std::string& text)
+{
+    std::vector<std::string> items;
+    std::stringstream in(text);
+    for (std::string item; std::getline(in, item, ',');)
+        if (!item.empty()) items.push_back(item);
+    if (items.empty()) throw std::invalid_argument("empty list: " + text);
+    return items;
+}
+
+Arguments parse(int argc, char** argv)
+{
+    Arguments a;
+    if (argc % 2 == 0) throw std::invalid_argument(std::string("option ") + argv[argc - 1] + " needs a value");
+    for (int i = 1; i + 1 < argc; i += 2) {
+        const std::string key = argv[i], value = argv[i + 1];
+        if (key == "--models") a.models = split(value);
+        else if (key == "--points") a.points = std::stoul(value);
+        else if (key == "--rotations") a.rotations = std::stoul(value);
+        else if (key == "--repetitions") a.repetitions = std::stoi(value);
+        else if (key == "--seed") a.seed = std::stoull(value);
+        else if (key == "--traversals") a.traversals = split(value);
+        else if (key == "--csv") a.csv = value;
+        else throw std::invalid_argument("unknown option " + key);
+    }
+    if (a.repetitions < 1 || a.rotations == 0 || a.points < 100)
+        throw std::invalid_argument("--repetitions and --rotations must be >= 1, --points >= 100");
+    return a;
+}
+
+PCCD::Traversal traversal_of(const std::string& name)
+{
+    if (name == "flat") return PCCD::Traversal::flat;
+    if (name == "depth_first") return PCCD::Traversal::depth_first;
+    if (name == "likelihood") return PCCD::Traversal::likelihood;
+    throw std::invalid_argument("unknown traversal " + name + " (flat, depth_first, likelihood)");
+}
+
+double thread_cpu_us()
+{
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return double(t.tv_sec) * 1e6 + double(t.tv_nsec) * 1e-3;
+}
+
+/// Median CPU time (us) of `repetitions` runs of `run`, and its last result.
+template <class Run>
+auto timed(int repetitions, const Run& run)
+{
+    std::vector<double> times;
+    decltype(run()) result{};
+    for (int k = 0; k < repetitions; ++k) {
+        const double start = thread_cpu_us();
+        result = run();
+        times.push_back(thread_cpu_us() - start);
+    }
+    return std::pair{result, pccd_bench::median(times)};
+}
+
+struct Series {
+    std::map<double, std::vector<double>> by_distance;
+    std::vector<double> all, near;
+    std::size_t differs_flat = 0, differs_fcl = 0;
+    double f_evaluations = 0.0;
+};
+
+double p99(std::vector<double> v)
+{
+    std::sort(v.begin(), v.end());
+    return pccd_bench::sorted_quantile(v, 99);
+}
+
+void run_model(const std::string& name, const Arguments& args, std::ofstream* csv)
+{
+    const std::filesystem::path path = std::filesystem::path(PCCD_DATA_DIR) / name;
+    PCCD::Triangle_mesh_data mesh = PCCD::IO::read_triangle_mesh(path.string());
+    const PCCD::Similarity_3 normalization = PCCD::compute_unit_cube_normalization(mesh.vertices);
+    for (auto& v : mesh.vertices) v = normalization.transform_point(v);
+    const PCCD::benchmark::Fcl_mesh_baseline fcl(mesh);
+    PCCD::Random_engine engine(args.seed);
+    const PCCD::Triangle_mesh_sample sample =
+        PCCD::sample_triangle_mesh(mesh.vertices, mesh.triangles, args.points, engine);
+    std::vector<Eigen::Vector3d> points(std::size_t(sample.points.cols()));
+    for (Eigen::Index i = 0; i < sample.points.cols(); ++i) points[std::size_t(i)] = sample.points.col(i);
+    const auto start = pccd_bench::Clock::now();
+    const PCCD::Point_cloud_object<> object(points);
+    const double preprocess_ms = pccd_bench::ms_since(start);
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    std::printf("\n%s: %zu triangles, %zu points sampled by area, r(P) %.5f, preprocessing %.0f ms, peak memory so "
+                "far %.0f MiB (%.0f bytes per point), hierarchy %zu nodes, depth %zu\n",
+                name.c_str(), mesh.triangles.size(), object.size(), object.sampling_radius(), preprocess_ms,
+                double(usage.ru_maxrss) / 1024.0, double(usage.ru_maxrss) * 1024.0 / double(object.size()),
+                object.hierarchy().nodes().size(), object.hierarchy().height());
+
+    std::vector<double> distances;
+    for (int k = 0; k <= 12; ++k) distances.push_back(0.25 * k);
+    const auto poses = PCCD::generate_benchmark_poses(
+        {.distances = distances, .rotations_per_distance = args.rotations, .seed = args.seed});
+    std::vector<std::string> methods{"fcl"};
+    for (const auto& t : args.traversals) methods.push_back(t);
+    std::map<std::string, Series> series;
+    for (const auto& pose : poses) {
+        const auto [fcl_hit, fcl_us] = timed(args.repetitions, [&] { return fcl.collide(pose.pose_a, pose.pose_b); });
+        bool flat_hit = fcl_hit;
+        const bool near = pose.distance >= 1.0 && pose.distance <= 2.25;
+        const auto record = [&](const std::string& method, bool hit, double us, double f) {
+            Series& s = series[method];
+            s.by_distance[pose.distance].push_back(us);
+            s.all.push_back(us);
+            if (near) s.near.push_back(us);
+            s.differs_fcl += hit != fcl_hit ? 1 : 0;
+            s.differs_flat += hit != flat_hit ? 1 : 0;
+            s.f_evaluations += f;
+            if (csv)
+                *csv << name << ',' << method << ',' << pose.distance << ',' << pose.rotation_index << ',' << int(hit)
+                     << ',' << us << ',' << f << '\n';
+        };
+        record("fcl", fcl_hit, fcl_us, 0.0);
+        for (const auto& t : args.traversals) {
+            const PCCD::Intersection_options options{.seed = args.seed, .traversal = traversal_of(t)};
+            const auto [result, us] = timed(args.repetitions, [&] {
+                return PCCD::do_intersect(object, pose.pose_a, object, pose.pose_b, options);
+            });
+            if (t == "flat") flat_hit = result.intersects;
+            record(t, result.intersects, us, double(result.counters.f_evaluations));
+        }
+    }
+    std::printf("%-12s", "d");
+    for (const auto& m : methods) std::printf(" %22s", (m + " mean/median").c_str());
+    std::printf("\n");
+    for (double d : distances) {
+        std::printf("%-12.2f", d);
+        for (const auto& m : methods) {
+            const auto& v = series[m].by_distance[d];
+            std::printf(" %13.1f / %6.1f", pccd_bench::mean(v), pccd_bench::median(v));
+        }
+        std::printf("\n");
+    }
+    const double fcl_all = pccd_bench::mean(series["fcl"].all), fcl_near = pccd_bench::mean(series["fcl"].near);
+    std::printf("%-12s %10s %10s %8s %10s %8s %8s %9s %9s %8s\n", "method", "mean_us", "median_us", "/fcl", "near_us",
+                "/fcl", "p99_us", "!=flat", "!=fcl", "mean_f");
+    for (const auto& m : methods) {
+        const Series& s = series[m];
+        const double all = pccd_bench::mean(s.all), near = pccd_bench::mean(s.near);
+        std::printf("%-12s %10.1f %10.1f %8.2f %10.1f %8.2f %8.1f %9zu %9zu %8.1f\n", m.c_str(), all,
+                    pccd_bench::median(s.all), all / fcl_all, near, near / fcl_near, p99(s.all), s.differs_flat,
+                    s.differs_fcl, s.f_evaluations / double(s.all.size()));
+    }
+    std::fflush(stdout);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    try {
+        const Arguments args = parse(argc, argv);
+        if (std::string(PCCD_DATA_DIR).empty()) throw std::runtime_error("no libcgal-demo data directory configured");
+        std::printf("hierarchy_benchmark: %zu points per cloud, %zu rotation pairs x 13 distances (0:3:0.25), seed "
+                    "%llu, median of %d runs per query, thread CPU time in us, one thread\n",
+                    args.points, args.rotations, (unsigned long long)args.seed, args.repetitions);
+        std::ofstream csv;
+        if (!args.csv.empty()) {
+            csv = pccd_bench::open_csv(args.csv);
+            csv << "model,method,distance,rotation,intersects,cpu_us,f_evaluations\n";
+        }
+        for (const auto& model : args.models) run_model(model, args, args.csv.empty() ? nullptr : &csv);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "hierarchy_benchmark: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}

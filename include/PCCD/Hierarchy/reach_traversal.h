@@ -1,0 +1,287 @@
+// PCCD/Hierarchy/reach_traversal.h -- exact proximity tests between two point cloud hierarchies
+// built with reaches (doc/algorithms.md "Point cloud hierarchy", doc/manual/hierarchy.md): whether
+// a point lies within the reach of some point of a cloud, which points of one cloud lie within the
+// reach of the other, and whether two clouds have a pair of points closer than the sum of their
+// reaches. The implicit surface of a cloud is defined only within the reach of its points, so these
+// tests bound where f is defined and where two surfaces can share a zero, without evaluating f.
+// Boxes grown by a node's largest reach prune node pairs; leaves compare points.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <PCCD/Error.h>
+#include <PCCD/Hierarchy/Point_cloud_hierarchy.h>
+#include <PCCD/Rigid_transform_3.h>
+
+namespace PCCD {
+
+/// How a query scales the reaches stored in a hierarchy: a point's reach is min(scale * stored, cap).
+/// Monotone in the stored reach, so a node's largest reach maps to the largest of its points.
+struct Reach_rule {
+    /// Factor on the stored reach, > 0 (1: the surface's domain; the contact core of a verified
+    /// contact, Intersection_options::contact_core, for where a contact can lie).
+    double scale = 1.0;
+    /// Upper bound on any reach (e.g. the kernel's support radius: f needs a point that close), > 0.
+    double cap = std::numeric_limits<double>::infinity();
+
+    double operator()(double stored) const { return std::min(scale * stored, cap); }
+};
+
+/// What a reach traversal visited.
+struct Reach_counters {
+    /// Node pairs tested.
+    std::size_t node_pairs = 0;
+    /// Leaf pairs whose points were compared.
+    std::size_t leaf_pairs = 0;
+};
+
+/// Whether box `a` mapped by `a_to_b` and grown by `margin_a`, and the axis-aligned box `b` grown by
+/// `margin_b`, may overlap: false only when one of the six face normals separates them (the grown
+/// boxes contain the Minkowski sums of the boxes with balls of those radii, so a false answer means
+/// no point within margin_a of box a is within margin_b of box b). O(1); pure.
+namespace internal {
+
+/// grown_boxes_may_overlap() with the rotation r of the motion, |r| and a's centre already mapped
+/// (a traversal computes |r| once).
+inline bool grown_boxes_may_overlap(const Eigen::AlignedBox3d& a, const Eigen::Matrix3d& r, const Eigen::Matrix3d& abs_r,
+                                    const Eigen::Vector3d& mapped_centre_a, double margin_a, const Eigen::AlignedBox3d& b,
+                                    double margin_b)
+{
+    const Eigen::Vector3d ha = 0.5 * (a.max() - a.min()) + Eigen::Vector3d::Constant(margin_a);
+    const Eigen::Vector3d hb = 0.5 * (b.max() - b.min()) + Eigen::Vector3d::Constant(margin_b);
+    const Eigen::Vector3d t = mapped_centre_a - b.center();
+    for (int i = 0; i < 3; ++i)
+        if (std::abs(t(i)) > hb(i) + abs_r.row(i).dot(ha)) return false;
+    for (int j = 0; j < 3; ++j)
+        if (std::abs(t.dot(r.col(j))) > ha(j) + abs_r.col(j).dot(hb)) return false;
+    return true;
+}
+
+} // namespace internal
+
+inline bool grown_boxes_may_overlap(const Eigen::AlignedBox3d& a, const Rigid_transform_3<double>& a_to_b,
+                                    double margin_a, const Eigen::AlignedBox3d& b, double margin_b)
+{
+    const Eigen::Matrix3d& r = a_to_b.rotation();
+    const Eigen::Matrix3d abs_r = r.cwiseAbs();
+    return internal::grown_boxes_may_overlap(a, r, abs_r, a_to_b.transform_point(a.center()), margin_a, b, margin_b);
+}
+
+/// Whether the point q (t's local frame) lies within the reach of some point of t: |q - p_k| <=
+/// rule(reach_k) for some k. Exact (compares points at the leaves). O(height) nodes for a point
+/// near one leaf; more where grown boxes overlap.
+inline bool within_reach(const Point_cloud_hierarchy& t, const Eigen::Vector3d& q, const Reach_rule& rule)
+{
+    if (t.empty()) return false;
+    using Index = Point_cloud_hierarchy::Index;
+    const Eigen::Matrix4Xd& points = t.ordered_points();
+    // A fixed stack: a depth-first walk holds at most one sibling per level, and a median-split tree
+    // of < 2^32 points has fewer than 64 levels.
+    Index stack[64];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const Index i = stack[--top];
+        const auto& node = t.node(i);
+        const double margin = rule(node.reach);
+        if ((q.array() < node.box.min().array() - margin).any() || (q.array() > node.box.max().array() + margin).any())
+            continue;
+        if (node.is_leaf()) {
+            for (Index k = node.first; k < node.first + node.count; ++k) {
+                const double reach = rule(points(3, k));
+                if ((points.col(k).head<3>() - q).squaredNorm() <= reach * reach) return true;
+            }
+            continue;
+        }
+        stack[top++] = t.right(i);
+        stack[top++] = t.left(i);
+    }
+    return false;
+}
+
+/// Calls `visit(leaf_s, leaf_t)` for every pair of leaves whose boxes may hold a point of s within
+/// the reach (per `rule_t`) of a point of t: s's box mapped by `s_to_t`, t's box grown by its
+/// node's largest reach (`either`: s's box grown by s's reach or t's by t's, i.e. pairs where a
+/// point of either leaf may lie within the reach of the other's: the margin is the larger reach, not
+/// the sum). Depth-first, descending the node with more points; with `closest_first`
+/// the child whose box centre lies nearer the other node's centre is visited first (the pairs most
+/// likely to touch early), otherwise the left child. Deterministic. `visit` returns false to stop
+/// the traversal. Returns the counters.
+/// Complexity: O(node pairs visited), each at most once; O(height) extra space.
+template <class Visitor>
+Reach_counters for_each_leaf_pair_within_reach(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t,
+                                               const Rigid_transform_3<double>& s_to_t, const Reach_rule& rule_s,
+                                               const Reach_rule& rule_t, Visitor&& visit, bool closest_first = false,
+                                               bool either = false)
+{
+    Reach_counters counters;
+    if (s.empty() || t.empty()) return counters;
+    using Index = Point_cloud_hierarchy::Index;
+    const Eigen::Matrix3d& r = s_to_t.rotation();
+    const Eigen::Matrix3d abs_r = r.cwiseAbs();
+    // A depth-first walk holds at most one pending sibling pair per level of the two trees.
+    std::vector<std::pair<Index, Index>> stack;
+    stack.reserve(128);
+    stack.emplace_back(0, 0);
+    while (!stack.empty()) {
+        const auto [i, j] = stack.back();
+        stack.pop_back();
+        ++counters.node_pairs;
+        const auto& ns = s.node(i);
+        const auto& nt = t.node(j);
+        const double ms = rule_s(ns.reach), mt = rule_t(nt.reach);
+        const Eigen::Vector3d centre_s = s_to_t.transform_point(ns.box.center());
+        if (!internal::grown_boxes_may_overlap(ns.box, r, abs_r, centre_s, either ? 0.0 : ms, nt.box,
+                                               either ? std::max(ms, mt) : mt))
+            continue;
+        if (ns.is_leaf() && nt.is_leaf()) {
+            ++counters.leaf_pairs;
+            if (!visit(i, j)) return counters;
+            continue;
+        }
+        const bool descend_s = !ns.is_leaf() && (nt.is_leaf() || ns.count >= nt.count);
+        if (descend_s) {
+            Index first = s.left(i), second = s.right(i);
+            if (closest_first) {
+                const Eigen::Vector3d c = nt.box.center();
+                const auto distance = [&](Index k) { return (s_to_t.transform_point(s.node(k).box.center()) - c).squaredNorm(); };
+                if (distance(second) < distance(first)) std::swap(first, second);
+            }
+            stack.emplace_back(second, j);
+            stack.emplace_back(first, j);
+        } else {
+            Index first = t.left(j), second = t.right(j);
+            if (closest_first) {
+                const auto distance = [&](Index k) { return (t.node(k).box.center() - centre_s).squaredNorm(); };
+                if (distance(second) < distance(first)) std::swap(first, second);
+            }
+            stack.emplace_back(i, second);
+            stack.emplace_back(i, first);
+        }
+    }
+    return counters;
+}
+
+/// The smallest value of |T p - q| - rule_s(reach_p) - rule_t(reach_q) over the points p of leaf
+/// `leaf_s` of s and q of leaf `leaf_t` of t (T = s_to_t): <= 0 exactly when some pair of their
+/// points lies within the sum of its reaches. O(|leaf_s| |leaf_t|).
+inline double leaf_pair_gap(const Point_cloud_hierarchy& s, Point_cloud_hierarchy::Index leaf_s,
+                            const Point_cloud_hierarchy& t, Point_cloud_hierarchy::Index leaf_t,
+                            const Rigid_transform_3<double>& s_to_t, const Reach_rule& rule_s, const Reach_rule& rule_t)
+{
+    const auto& ns = s.node(leaf_s);
+    const auto& nt = t.node(leaf_t);
+    const Eigen::Matrix4Xd& ps = s.ordered_points();
+    const Eigen::Matrix4Xd& pt = t.ordered_points();
+    double gap = std::numeric_limits<double>::infinity();
+    for (auto a = ns.first; a < ns.first + ns.count; ++a) {
+        const Eigen::Vector3d p = s_to_t.transform_point(Eigen::Vector3d(ps.col(a).head<3>()));
+        const double ra = rule_s(ps(3, a));
+        for (auto b = nt.first; b < nt.first + nt.count; ++b)
+            gap = std::min(gap, (pt.col(b).head<3>() - p).norm() - ra - rule_t(pt(3, b)));
+    }
+    return gap;
+}
+
+/// Whether some point p of leaf `leaf_s` of s and q of leaf `leaf_t` of t satisfy |T p - q| <=
+/// rule_s(reach_p) + rule_t(reach_q) (T = s_to_t); leaf_pair_gap() <= 0 without its square roots.
+inline bool leaf_reaches_meet(const Point_cloud_hierarchy& s, Point_cloud_hierarchy::Index leaf_s,
+                              const Point_cloud_hierarchy& t, Point_cloud_hierarchy::Index leaf_t,
+                              const Rigid_transform_3<double>& s_to_t, const Reach_rule& rule_s, const Reach_rule& rule_t)
+{
+    const auto& ns = s.node(leaf_s);
+    const auto& nt = t.node(leaf_t);
+    const Eigen::Matrix4Xd& ps = s.ordered_points();
+    const Eigen::Matrix4Xd& pt = t.ordered_points();
+    for (auto a = ns.first; a < ns.first + ns.count; ++a) {
+        const Eigen::Vector3d p = s_to_t.transform_point(Eigen::Vector3d(ps.col(a).head<3>()));
+        const double ra = rule_s(ps(3, a));
+        for (auto b = nt.first; b < nt.first + nt.count; ++b) {
+            const double reach = ra + rule_t(pt(3, b));
+            if ((pt.col(b).head<3>() - p).squaredNorm() <= reach * reach) return true;
+        }
+    }
+    return false;
+}
+
+/// Whether s and t (s mapped by `s_to_t`) have a pair of points p, q with |T p - q| <= rule_s(reach_p)
+/// + rule_t(reach_q): the condition for the balls of their reaches to meet, so for a point that lies
+/// within reach of both clouds. Exact; stops at the first such pair. `counters` accumulates the work.
+/// `max_leaf_pairs`: after comparing this many leaf pairs without finding one, answers true (they
+/// may meet; a conservative answer that bounds the work of deep overlaps, where the boxes of many
+/// leaf pairs overlap).
+inline bool reaches_meet(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t,
+                         const Rigid_transform_3<double>& s_to_t, const Reach_rule& rule_s, const Reach_rule& rule_t,
+                         Reach_counters& counters, std::size_t max_leaf_pairs = std::numeric_limits<std::size_t>::max())
+{
+    bool met = false;
+    std::size_t compared = 0;
+    const Reach_counters c = for_each_leaf_pair_within_reach(
+        s, t, s_to_t, rule_s, rule_t, [&](Point_cloud_hierarchy::Index i, Point_cloud_hierarchy::Index j) {
+            met = ++compared > max_leaf_pairs || leaf_reaches_meet(s, i, t, j, s_to_t, rule_s, rule_t);
+            return !met;
+        });
+    counters.node_pairs += c.node_pairs;
+    counters.leaf_pairs += c.leaf_pairs;
+    return met;
+}
+
+/// The points of s (indices of the cloud, in hierarchy order of s) that lie within the reach of
+/// some point of t (per `rule_t`) once mapped by `s_to_t`. `max_leaf_pairs`: give up (return false,
+/// `out` partial) once the traversal has compared more leaf pairs than this; true when `out` is
+/// complete. Exact.
+inline bool points_within_reach(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t,
+                                const Rigid_transform_3<double>& s_to_t, const Reach_rule& rule_t,
+                                std::vector<std::uint32_t>& out, Reach_counters& counters,
+                                std::size_t max_leaf_pairs = std::numeric_limits<std::size_t>::max())
+{
+    using Index = Point_cloud_hierarchy::Index;
+    out.clear();
+    std::vector<std::pair<Index, Index>> pairs;
+    bool complete = true;
+    const Reach_counters c =
+        for_each_leaf_pair_within_reach(s, t, s_to_t, Reach_rule{.scale = 0.0, .cap = 0.0}, rule_t, [&](Index i, Index j) {
+            if (pairs.size() >= max_leaf_pairs) {
+                complete = false;
+                return false;
+            }
+            pairs.emplace_back(i, j);
+            return true;
+        });
+    counters.node_pairs += c.node_pairs;
+    counters.leaf_pairs += c.leaf_pairs;
+    if (!complete) return false;
+    std::stable_sort(pairs.begin(), pairs.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    const Eigen::Matrix4Xd& ps = s.ordered_points();
+    const Eigen::Matrix4Xd& pt = t.ordered_points();
+    for (std::size_t k = 0; k < pairs.size();) {
+        std::size_t end = k;
+        while (end < pairs.size() && pairs[end].first == pairs[k].first) ++end;
+        const auto& ns = s.node(pairs[k].first);
+        for (auto a = ns.first; a < ns.first + ns.count; ++a) {
+            const Eigen::Vector3d p = s_to_t.transform_point(Eigen::Vector3d(ps.col(a).head<3>()));
+            bool inside = false;
+            for (std::size_t m = k; m < end && !inside; ++m) {
+                const auto& nt = t.node(pairs[m].second);
+                for (auto b = nt.first; b < nt.first + nt.count && !inside; ++b) {
+                    const double reach = rule_t(pt(3, b));
+                    inside = (pt.col(b).head<3>() - p).squaredNorm() <= reach * reach;
+                }
+            }
+            if (inside) out.push_back(s.order()[a]);
+        }
+        k = end;
+    }
+    return true;
+}
+
+} // namespace PCCD

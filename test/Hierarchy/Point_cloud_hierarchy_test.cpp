@@ -1,0 +1,72 @@
+// Tests of PCCD/Hierarchy/Point_cloud_hierarchy.h with reaches, against brute force over the points:
+// every point in exactly one leaf, every box contains its children and points, a node's reach is
+// the largest of its points', the ordered points are the points in order(); bad reaches throw.
+#include <PCCD/Hierarchy/Point_cloud_hierarchy.h>
+
+#include <catch2/catch.hpp>
+
+#include <limits>
+#include <vector>
+
+#include "hierarchy_test_helpers.h"
+
+using Catch::Matchers::Contains;
+using Index = PCCD::Point_cloud_hierarchy::Index;
+
+TEST_CASE("A hierarchy with reaches: leaves partition the points, boxes and reaches bound their subtrees", "[hierarchy]")
+{
+    for (const std::size_t n : {1u, 7u, 8u, 9u, 100u, 1000u}) {
+        for (const std::size_t leaf : {1u, 8u, 16u}) {
+            const Eigen::Matrix3Xd p = pccd_test::hierarchy_points(n, n + leaf, 0.3);
+            const Eigen::VectorXd reach = pccd_test::hierarchy_reaches(n, 7 * n + leaf, 0.0, 0.2);
+            const PCCD::Point_cloud_hierarchy h(p, reach, {.leaf_size = leaf});
+            REQUIRE(h.has_reach());
+            std::vector<int> seen(n, 0);
+            for (Index i = 0; i < h.nodes().size(); ++i) {
+                const auto& node = h.node(i);
+                double largest = 0.0;
+                for (const Index k : h.points_of(i)) {
+                    CHECK(node.box.contains(p.col(k)));
+                    largest = std::max(largest, reach(k));
+                }
+                CHECK(node.reach == largest);
+                if (node.is_leaf()) {
+                    CHECK(node.count <= std::max<std::size_t>(leaf, 1));
+                    for (const Index k : h.points_of(i)) ++seen[k];
+                } else {
+                    for (const Index c : {h.left(i), h.right(i)}) {
+                        CHECK(node.box.contains(h.node(c).box));
+                        CHECK(h.node(c).reach <= node.reach);
+                    }
+                }
+            }
+            for (const int c : seen) CHECK(c == 1);
+            for (std::size_t k = 0; k < n; ++k) {
+                CHECK(h.ordered_points().col(Eigen::Index(k)).head<3>() == p.col(h.order()[k]));
+                CHECK(h.ordered_points()(3, Eigen::Index(k)) == reach(h.order()[k]));
+            }
+        }
+    }
+}
+
+TEST_CASE("A hierarchy without reaches has reach 0 everywhere", "[hierarchy]")
+{
+    const Eigen::Matrix3Xd p = pccd_test::hierarchy_points(200, 3);
+    const PCCD::Point_cloud_hierarchy h(p);
+    CHECK_FALSE(h.has_reach());
+    for (const auto& node : h.nodes()) CHECK(node.reach == 0.0);
+    CHECK(h.ordered_points().row(3).isZero(0.0));
+}
+
+TEST_CASE("A hierarchy rejects bad reaches", "[hierarchy]")
+{
+    const Eigen::Matrix3Xd p = pccd_test::hierarchy_points(10, 1);
+    CHECK_THROWS_WITH(PCCD::Point_cloud_hierarchy(p, Eigen::VectorXd::Ones(9)), Contains("9 reaches for 10 points"));
+    Eigen::VectorXd reach = Eigen::VectorXd::Ones(10);
+    reach(4) = -1.0;
+    CHECK_THROWS_WITH(PCCD::Point_cloud_hierarchy(p, reach), Contains("reach of point 4"));
+    reach(4) = std::numeric_limits<double>::infinity();
+    CHECK_THROWS_WITH(PCCD::Point_cloud_hierarchy(p, reach), Contains("reach of point 4"));
+    reach(4) = std::numeric_limits<double>::quiet_NaN();
+    CHECK_THROWS_WITH(PCCD::Point_cloud_hierarchy(p, reach), Contains("reach of point 4"));
+}

@@ -1,0 +1,128 @@
+// Tests of PCCD/Hierarchy/reach_traversal.h against brute force over all point pairs: within_reach,
+// points_within_reach, reaches_meet, leaf_pair_gap and the leaf pairs of
+// for_each_leaf_pair_within_reach, for random clouds, reaches, rules and poses, in both child orders.
+#include <PCCD/Hierarchy/reach_traversal.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "hierarchy_test_helpers.h"
+
+using Index = PCCD::Point_cloud_hierarchy::Index;
+
+namespace {
+
+struct Clouds {
+    Eigen::Matrix3Xd ps, pt;
+    Eigen::VectorXd rs, rt;
+    PCCD::Point_cloud_hierarchy s, t;
+
+    Clouds(std::uint64_t seed, double flat)
+        : ps(pccd_test::hierarchy_points(700, seed, flat)),
+          pt(pccd_test::hierarchy_points(500, seed + 100, flat)),
+          rs(pccd_test::hierarchy_reaches(700, seed + 200, 0.01, 0.06)),
+          rt(pccd_test::hierarchy_reaches(500, seed + 300, 0.01, 0.06)),
+          s(ps, rs, {.leaf_size = 8}),
+          t(pt, rt, {.leaf_size = 8})
+    {
+    }
+};
+
+bool brute_within(const Eigen::Matrix3Xd& pt, const Eigen::VectorXd& rt, const PCCD::Reach_rule& rule,
+                  const Eigen::Vector3d& q)
+{
+    for (Eigen::Index k = 0; k < pt.cols(); ++k)
+        if ((pt.col(k) - q).norm() <= rule(rt(k))) return true;
+    return false;
+}
+
+} // namespace
+
+TEST_CASE("Reach tests agree with brute force over all point pairs", "[hierarchy]")
+{
+    for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+        const Clouds c(seed, seed % 2 == 0 ? 0.05 : 1.0);
+        // From deep overlap to apart (shifts up to 3 for unit clouds).
+        const PCCD::Rigid_transform_3<double> s_to_t = pccd_test::hierarchy_pose(seed, 0.25 * double(seed));
+        const PCCD::Reach_rule rule_s{.scale = 0.5 + 0.1 * double(seed % 5), .cap = 0.05};
+        const PCCD::Reach_rule rule_t{.scale = 1.0, .cap = seed % 3 == 0 ? 0.03 : 1.0};
+
+        std::set<std::uint32_t> truth;
+        bool meet = false;
+        for (Eigen::Index a = 0; a < c.ps.cols(); ++a) {
+            const Eigen::Vector3d q = s_to_t.transform_point(Eigen::Vector3d(c.ps.col(a)));
+            if (brute_within(c.pt, c.rt, rule_t, q)) truth.insert(std::uint32_t(a));
+            CHECK(PCCD::within_reach(c.t, q, rule_t) == (truth.count(std::uint32_t(a)) == 1));
+            for (Eigen::Index b = 0; b < c.pt.cols() && !meet; ++b)
+                meet = (c.pt.col(b) - q).norm() <= rule_s(c.rs(a)) + rule_t(c.rt(b));
+        }
+        std::vector<std::uint32_t> listed;
+        PCCD::Reach_counters counters;
+        REQUIRE(PCCD::points_within_reach(c.s, c.t, s_to_t, rule_t, listed, counters));
+        CHECK(std::set<std::uint32_t>(listed.begin(), listed.end()) == truth);
+        CHECK(listed.size() == truth.size());
+        CHECK(PCCD::reaches_meet(c.s, c.t, s_to_t, rule_s, rule_t, counters) == meet);
+        // With a leaf-pair limit the answer may only err towards "may meet".
+        if (meet) CHECK(PCCD::reaches_meet(c.s, c.t, s_to_t, rule_s, rule_t, counters, 0));
+        INFO("seed " << seed << ": " << truth.size() << " points within reach, meet " << meet);
+
+        // Every leaf pair holding a qualifying point pair is reported, in either child order, and
+        // leaf_pair_gap() is the brute-force minimum over its points.
+        for (const bool closest_first : {false, true}) {
+            std::set<std::pair<Index, Index>> reported;
+            PCCD::for_each_leaf_pair_within_reach(
+                c.s, c.t, s_to_t, rule_s, rule_t,
+                [&](Index i, Index j) {
+                    reported.emplace(i, j);
+                    return true;
+                },
+                closest_first);
+            for (Index i = 0; i < c.s.nodes().size(); ++i) {
+                if (!c.s.node(i).is_leaf()) continue;
+                for (Index j = 0; j < c.t.nodes().size(); ++j) {
+                    if (!c.t.node(j).is_leaf()) continue;
+                    double gap = std::numeric_limits<double>::infinity();
+                    for (const Index a : c.s.points_of(i))
+                        for (const Index b : c.t.points_of(j))
+                            gap = std::min(gap, (s_to_t.transform_point(Eigen::Vector3d(c.ps.col(a))) - c.pt.col(b)).norm() -
+                                                    rule_s(c.rs(a)) - rule_t(c.rt(b)));
+                    if (gap <= 0.0) CHECK(reported.count({i, j}) == 1);
+                    if (reported.count({i, j}) == 1)
+                        CHECK(PCCD::leaf_pair_gap(c.s, i, c.t, j, s_to_t, rule_s, rule_t) == Approx(gap).margin(1e-12));
+                }
+            }
+        }
+    }
+}
+
+TEST_CASE("Grown boxes: separated boxes are never reported overlapping", "[hierarchy]")
+{
+    // Two unit boxes 1 apart along x (after the motion): they overlap exactly when the margins sum
+    // to at least 1.
+    const Eigen::AlignedBox3d a(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 1, 1));
+    const Eigen::AlignedBox3d b(Eigen::Vector3d(2, 0, 0), Eigen::Vector3d(3, 1, 1));
+    const PCCD::Rigid_transform_3<double> identity(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero());
+    CHECK_FALSE(PCCD::grown_boxes_may_overlap(a, identity, 0.4, b, 0.5));
+    CHECK(PCCD::grown_boxes_may_overlap(a, identity, 0.5, b, 0.5));
+    CHECK(PCCD::grown_boxes_may_overlap(a, identity, 0.0, b, 1.0));
+    CHECK_FALSE(PCCD::grown_boxes_may_overlap(a, identity, 0.0, b, 0.99));
+}
+
+TEST_CASE("An empty reach walk visits nothing", "[hierarchy]")
+{
+    const PCCD::Point_cloud_hierarchy empty;
+    const Clouds c(5, 1.0);
+    const PCCD::Rigid_transform_3<double> identity(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero());
+    std::size_t calls = 0;
+    const auto counters = PCCD::for_each_leaf_pair_within_reach(empty, c.t, identity, {}, {}, [&](Index, Index) {
+        ++calls;
+        return true;
+    });
+    CHECK(calls == 0);
+    CHECK(counters.node_pairs == 0);
+    CHECK_FALSE(PCCD::within_reach(empty, Eigen::Vector3d::Zero(), {}));
+}
