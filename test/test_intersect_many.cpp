@@ -16,6 +16,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <set>
 #include <string>
@@ -154,6 +155,21 @@ TEST_CASE("Batch results depend on the pair index, not on the neighbours", "[int
         const auto& p = pairs[i];
         CHECK(pccd_test::result_difference(all[i], PCCD::intersection_points(*p.a, p.pose_a, *p.b, p.pose_b, o, isearch)) ==
               "");
+    }
+}
+
+TEST_CASE("Chunks with first_index together equal the whole batch", "[intersection][batch]")
+{
+    const std::vector<Pair> pairs = make_pairs(9);
+    const PCCD::Intersection_options options{.seed = 5};
+    const auto whole = PCCD::do_intersect_many(pairs, {.threads = 2}, options, rst);
+    for (const std::size_t first : {std::size_t(0), std::size_t(4), std::size_t(7)}) {
+        const std::vector<Pair> chunk(pairs.begin() + std::ptrdiff_t(first), pairs.end());
+        const auto part = PCCD::do_intersect_many(chunk, {.threads = 1, .first_index = first}, options, rst);
+        for (std::size_t i = 0; i < chunk.size(); ++i) {
+            INFO("chunk from " << first << ", pair " << i);
+            CHECK(pccd_test::result_difference(part[i], whole[first + i]) == "");
+        }
     }
 }
 

@@ -40,6 +40,10 @@ struct Batch_options {
     /// Worker threads; 0 (default) uses all available. Ignored without TBB (the pairs are then
     /// answered one after the other).
     unsigned threads = 0;
+    /// The index of the first pair in a larger batch that was split into chunks (e.g. to spread it
+    /// over several machines): pair i of the call is seeded as pair first_index + i of the whole,
+    /// so the chunks' results together equal those of the whole batch. Default 0.
+    std::uint64_t first_index = 0;
 };
 
 /// The seed of pair `index` of a batch whose options carry `seed`: the SplitMix64 output function
@@ -80,7 +84,7 @@ std::vector<Intersection_result> run_many(std::span<const Posed_pair<A, B>> pair
         for (std::size_t i = begin; i < end; ++i) {
             try {
                 Intersection_options pair_options = options;
-                pair_options.seed = pair_seed(options.seed, i);
+                pair_options.seed = pair_seed(options.seed, batch.first_index + i);
                 const Posed_pair<A, B>& p = pairs[i];
                 results[i] = run_query(*p.a, p.pose_a, *p.b, p.pose_b, pair_options, policy, first_hit, function);
             } catch (...) {
@@ -98,7 +102,7 @@ std::vector<Intersection_result> run_many(std::span<const Posed_pair<A, B>> pair
 } // namespace internal
 
 /// do_intersect() for every pair of `pairs`: result i answers pair i, with the seed
-/// pair_seed(options.seed, i) (see there), and is bit for bit the result of that sequential call
+/// pair_seed(options.seed, batch.first_index + i) (see there), and is bit for bit the result of that sequential call
 /// (answer, status, points, counters), for any `batch.threads` and with or without TBB.
 ///
 /// \tparam A, B models of CollisionObject (Point_cloud_object<K>).
