@@ -48,3 +48,9 @@ def test_dask_example_equals_intersection_points_many(source_dir, tmp):
     saved = run_example(source_dir, tmp, "--pairs", "40", "--chunk", "7", "--mode", "all", "--seed", "5")
     assert saved["points"].shape[0] > 100
     check_against_batch(saved)
+
+
+def test_readme_quotes_the_quickstart(source_dir):
+    """The README's Python example is examples/python/quickstart.py, verbatim."""
+    quickstart = (source_dir / "examples" / "python" / "quickstart.py").read_text().rstrip("\n")
+    assert "```python\n" + quickstart + "\n```" in (source_dir / "README.md").read_text()
