@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -36,33 +37,34 @@ struct Query_parameters {
     PCCD::Randomized_sampling randomized;
 };
 
-// The keyword arguments shared by the four query functions: their C++ parameters, their names in
-// the same order, and their pybind11 declarations (defaults: PCCD's).
-#define PCCD_PY_QUERY_PARAMETERS                                                                                 \
-    const std::string &method, std::uint64_t seed, std::optional<double> epsilon, const std::string &region,    \
-        const std::string &refinement, std::optional<double> point_spacing, std::size_t refinement_samples,    \
-        std::optional<std::size_t> max_f_evaluations, bool symmetric, bool verify_contacts,                     \
-        std::optional<double> contact_tolerance, double contact_core, std::optional<std::size_t> samples,      \
-        std::optional<std::size_t> min_samples, std::optional<std::size_t> max_samples,                        \
-        std::optional<double> coverage_c, std::optional<std::size_t> partner_candidates,                       \
-        std::optional<double> epsilon_factor
-#define PCCD_PY_QUERY_NAMES                                                                                      \
-    method, seed, epsilon, region, refinement, point_spacing, refinement_samples, max_f_evaluations, symmetric, \
-        verify_contacts, contact_tolerance, contact_core, samples, min_samples, max_samples, coverage_c,        \
-        partner_candidates, epsilon_factor
-#define PCCD_PY_QUERY_ARGS                                                                                       \
-    py::arg("method") = "isearch", py::arg("seed") = PCCD::Intersection_options{}.seed,                        \
-    py::arg("epsilon") = py::none(), py::arg("region") = "leaf_boxes", py::arg("refinement") = "projection",  \
-    py::arg("point_spacing") = py::none(),                                                                      \
-    py::arg("refinement_samples") = PCCD::Intersection_options{}.refinement_samples,                           \
-    py::arg("max_f_evaluations") = py::none(), py::arg("symmetric") = true, py::arg("verify_contacts") = true, \
-    py::arg("contact_tolerance") = py::none(), py::arg("contact_core") = PCCD::Intersection_options{}.contact_core, \
-    py::arg("samples") = py::none(), py::arg("min_samples") = py::none(), py::arg("max_samples") = py::none(), \
-    py::arg("coverage_c") = py::none(), py::arg("partner_candidates") = py::none(),                            \
-    py::arg("epsilon_factor") = py::none()
+/// The keyword arguments of a query, with PCCD's defaults.
+struct Query_arguments {
+    std::string method = "isearch";
+    std::uint64_t seed = PCCD::Intersection_options{}.seed;
+    std::optional<double> epsilon;
+    std::string region = "leaf_boxes";
+    std::string refinement = "projection";
+    std::optional<double> point_spacing;
+    std::size_t refinement_samples = PCCD::Intersection_options{}.refinement_samples;
+    std::optional<std::size_t> max_f_evaluations;
+    bool symmetric = true;
+    bool verify_contacts = true;
+    std::optional<double> contact_tolerance;
+    double contact_core = PCCD::Intersection_options{}.contact_core;
+    std::optional<std::size_t> samples, min_samples, max_samples;
+    std::optional<double> coverage_c;
+    std::optional<std::size_t> partner_candidates;
+    std::optional<double> epsilon_factor;
+    // Batch functions only.
+    unsigned threads = 0;
+    std::uint64_t first_index = 0;
+};
 
-Query_parameters parameters(PCCD_PY_QUERY_PARAMETERS)
+Query_parameters parameters(const Query_arguments& arguments)
 {
+    const auto& [method, seed, epsilon, region, refinement, point_spacing, refinement_samples, max_f_evaluations,
+                 symmetric, verify_contacts, contact_tolerance, contact_core, samples, min_samples, max_samples,
+                 coverage_c, partner_candidates, epsilon_factor, threads, first_index] = arguments;
     Query_parameters q;
     if (method == "rst")
         q.rst = true;
@@ -105,6 +107,63 @@ Query_parameters parameters(PCCD_PY_QUERY_PARAMETERS)
     if (coverage_c) (q.rst ? q.randomized.coverage_c : q.isearch.coverage_c) = *coverage_c;
     if (epsilon_factor) q.randomized.epsilon_factor = *epsilon_factor;
     return q;
+}
+
+template <class T>
+void read_argument(T& field, const py::handle& value, const char* function, std::string_view key)
+{
+    try {
+        field = value.cast<T>();
+    } catch (const py::cast_error&) {
+        throw py::type_error(std::string(function) + "(): " + std::string(key) + " cannot be " +
+                             std::string(py::str(py::repr(value))));
+    }
+}
+
+/// The keyword arguments of a call, parsed by hand (only the keys given are looked at: pybind11's
+/// per-argument matching of twenty defaults would cost more than a small query). An unknown key
+/// raises TypeError, like any Python function.
+Query_arguments query_arguments(const py::kwargs& kwargs, bool batch, const char* function)
+{
+    Query_arguments a;
+    for (const auto& [key_object, value] : kwargs) {
+        Py_ssize_t size = 0;
+        const char* text = PyUnicode_AsUTF8AndSize(key_object.ptr(), &size);
+        if (text == nullptr) throw py::error_already_set();
+        const std::string_view key(text, std::size_t(size));
+        const auto is = [&](std::string_view name) { return key == name; };
+        if (is("method")) read_argument(a.method, value, function, key);
+        else if (is("seed")) read_argument(a.seed, value, function, key);
+        else if (is("epsilon")) read_argument(a.epsilon, value, function, key);
+        else if (is("region")) read_argument(a.region, value, function, key);
+        else if (is("refinement")) read_argument(a.refinement, value, function, key);
+        else if (is("point_spacing")) read_argument(a.point_spacing, value, function, key);
+        else if (is("refinement_samples")) read_argument(a.refinement_samples, value, function, key);
+        else if (is("max_f_evaluations")) read_argument(a.max_f_evaluations, value, function, key);
+        else if (is("symmetric")) read_argument(a.symmetric, value, function, key);
+        else if (is("verify_contacts")) read_argument(a.verify_contacts, value, function, key);
+        else if (is("contact_tolerance")) read_argument(a.contact_tolerance, value, function, key);
+        else if (is("contact_core")) read_argument(a.contact_core, value, function, key);
+        else if (is("samples")) read_argument(a.samples, value, function, key);
+        else if (is("min_samples")) read_argument(a.min_samples, value, function, key);
+        else if (is("max_samples")) read_argument(a.max_samples, value, function, key);
+        else if (is("coverage_c")) read_argument(a.coverage_c, value, function, key);
+        else if (is("partner_candidates")) read_argument(a.partner_candidates, value, function, key);
+        else if (is("epsilon_factor")) read_argument(a.epsilon_factor, value, function, key);
+        else if (batch && is("threads")) read_argument(a.threads, value, function, key);
+        else if (batch && is("first_index")) read_argument(a.first_index, value, function, key);
+        else
+            throw py::type_error(std::string(function) + "() got an unexpected keyword argument '" + std::string(key) +
+                                 "'");
+    }
+    return a;
+}
+
+/// The parameters of a call: the defaults, built once, when no keyword is given.
+Query_parameters call_parameters(const py::kwargs& kwargs, const char* function)
+{
+    static const Query_parameters defaults = parameters(Query_arguments{});
+    return kwargs.empty() ? defaults : parameters(query_arguments(kwargs, false, function));
 }
 
 /// Calls `f(policy)` with the leaf intersector the parameters name.
@@ -437,29 +496,31 @@ void add_queries(py::module_& m)
     m.def(
         "do_intersect",
         [](const Object& a, const py::object& pose_a, const Object& b, const py::object& pose_b,
-           PCCD_PY_QUERY_PARAMETERS) { return query(a, pose_a, b, pose_b, true, parameters(PCCD_PY_QUERY_NAMES)); },
-        py::arg("a"), py::arg("pose_a"), py::arg("b"), py::arg("pose_b"), py::kw_only(), PCCD_PY_QUERY_ARGS,
-        do_intersect_doc.c_str());
+           const py::kwargs& kwargs) {
+            return query(a, pose_a, b, pose_b, true, call_parameters(kwargs, "do_intersect"));
+        },
+        py::arg("a"), py::arg("pose_a"), py::arg("b"), py::arg("pose_b"), do_intersect_doc.c_str());
     m.def(
         "intersection_points",
         [](const Object& a, const py::object& pose_a, const Object& b, const py::object& pose_b,
-           PCCD_PY_QUERY_PARAMETERS) { return query(a, pose_a, b, pose_b, false, parameters(PCCD_PY_QUERY_NAMES)); },
-        py::arg("a"), py::arg("pose_a"), py::arg("b"), py::arg("pose_b"), py::kw_only(), PCCD_PY_QUERY_ARGS,
-        intersection_points_doc.c_str());
+           const py::kwargs& kwargs) {
+            return query(a, pose_a, b, pose_b, false, call_parameters(kwargs, "intersection_points"));
+        },
+        py::arg("a"), py::arg("pose_a"), py::arg("b"), py::arg("pose_b"), intersection_points_doc.c_str());
     m.def(
         "do_intersect_many",
-        [](const py::iterable& pairs, unsigned threads, std::uint64_t first_index, PCCD_PY_QUERY_PARAMETERS) {
-            return many(pairs, threads, first_index, true, parameters(PCCD_PY_QUERY_NAMES));
+        [](const py::iterable& pairs, const py::kwargs& kwargs) {
+            const Query_arguments arguments = query_arguments(kwargs, true, "do_intersect_many");
+            return many(pairs, arguments.threads, arguments.first_index, true, parameters(arguments));
         },
-        py::arg("pairs"), py::kw_only(), py::arg("threads") = 0u, py::arg("first_index") = 0u, PCCD_PY_QUERY_ARGS,
-        do_intersect_many_doc.c_str());
+        py::arg("pairs"), do_intersect_many_doc.c_str());
     m.def(
         "intersection_points_many",
-        [](const py::iterable& pairs, unsigned threads, std::uint64_t first_index, PCCD_PY_QUERY_PARAMETERS) {
-            return many(pairs, threads, first_index, false, parameters(PCCD_PY_QUERY_NAMES));
+        [](const py::iterable& pairs, const py::kwargs& kwargs) {
+            const Query_arguments arguments = query_arguments(kwargs, true, "intersection_points_many");
+            return many(pairs, arguments.threads, arguments.first_index, false, parameters(arguments));
         },
-        py::arg("pairs"), py::kw_only(), py::arg("threads") = 0u, py::arg("first_index") = 0u, PCCD_PY_QUERY_ARGS,
-        intersection_points_many_doc.c_str());
+        py::arg("pairs"), intersection_points_many_doc.c_str());
     m.def("pair_seed", &PCCD::pair_seed, py::arg("seed"), py::arg("index"),
           R"doc(The seed of pair `index` of a batch whose seed is `seed`.
 

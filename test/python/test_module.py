@@ -231,8 +231,14 @@ def test_bad_query_options_raise_valueerror(shapes):
         pccd.do_intersect(sphere, None, torus, None, method="rst", samples=10)
     with pytest.raises(ValueError, match="region"):
         pccd.do_intersect(sphere, None, torus, None, region="everywhere")
-    with pytest.raises(TypeError):
+    with pytest.raises(TypeError, match="seed cannot be -1"):
         pccd.do_intersect(sphere, None, torus, None, seed=-1)
+    with pytest.raises(TypeError, match="unexpected keyword argument 'sed'"):
+        pccd.do_intersect(sphere, None, torus, None, sed=1)
+    with pytest.raises(TypeError, match="unexpected keyword argument 'threads'"):
+        pccd.intersection_points(sphere, None, torus, None, threads=2)
+    with pytest.raises(TypeError, match="max_samples cannot be 'many'"):
+        pccd.do_intersect_many([], max_samples="many")
     with pytest.raises(TypeError):
         pccd.do_intersect(sphere, None, "torus", None)
 
