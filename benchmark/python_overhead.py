@@ -40,7 +40,8 @@ def turn(dx):
 
 
 def python_median_us(a, pose, rounds, calls):
-    """Median over `rounds` of the mean time of `calls` consecutive pccd.do_intersect calls."""
+    """Median over `rounds` of the mean time of `calls` consecutive pccd.do_intersect calls (short
+    rounds, so that a round the scheduler preempts is an outlier the median ignores)."""
     samples = []
     for _ in range(rounds):
         start = time.perf_counter_ns()
@@ -93,8 +94,7 @@ def main():
             result = pccd.do_intersect(bunny, None, bunny, pose)
             cpp_us, cpp_evaluations, cpp_hit = cpp_median_us(args.pccd, args.bunny, pose, 20001, work)
             assert (cpp_evaluations, cpp_hit) == (result.counters["f_evaluations"], result.intersects), name
-            calls = 2000 if name == "apart" else 200
-            py_us = python_median_us(bunny, pose, 25, calls)
+            py_us = python_median_us(bunny, pose, 2001, 20 if name == "apart" else 5)
             figures[f"query_{name}"] = {"cpp_us": cpp_us, "python_us": py_us, "overhead_us": py_us - cpp_us,
                                         "intersects": result.intersects,
                                         "f_evaluations": result.counters["f_evaluations"]}
@@ -121,6 +121,8 @@ def main():
             assert [a[2] for a in answers] == [r.counters for r in reference]
             figures["dask_2_workers_qps"] = throughput(
                 lambda p: dask_many_pairs.run_on_cluster(client, blobs, p, chunk=100), named, args.repeats)
+            figures["dask_2_workers_chunk_10_qps"] = throughput(
+                lambda p: dask_many_pairs.run_on_cluster(client, blobs, p, chunk=10), named, args.repeats)
     figures["load_average_after"] = os.getloadavg()
 
     print("| measure | C++ | Python | overhead |")
@@ -134,7 +136,9 @@ def main():
     print("|---|---:|")
     print(f"| do_intersect_many, 1 thread | {figures['batch_threads_1_qps']:.0f} |")
     print(f"| do_intersect_many, 2 threads | {figures['batch_threads_2_qps']:.0f} |")
-    print(f"| Dask LocalCluster, 2 worker processes | {figures['dask_2_workers_qps']:.0f} |")
+    print(f"| Dask LocalCluster, 2 worker processes, chunks of 100 pairs | {figures['dask_2_workers_qps']:.0f} |")
+    print(f"| Dask LocalCluster, 2 worker processes, chunks of 10 pairs | "
+          f"{figures['dask_2_workers_chunk_10_qps']:.0f} |")
     print(f"\nload average before {figures['load_average_before']}, after {figures['load_average_after']}")
     if args.json:
         pathlib.Path(args.json).write_text(json.dumps(figures, indent=2))
