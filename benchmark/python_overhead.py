@@ -65,13 +65,17 @@ def cpp_median_us(pccd_tool, bunny, pose, count, work):
 
 
 def throughput(run, pairs, repeats):
-    """Median queries/s over `repeats` runs of run(pairs)."""
-    rates = []
+    """Median queries/s over `repeats` runs of run(pairs), and the median CPU share of this
+    process during a run (CPU seconds of all its threads / wall seconds: 2 would be two busy
+    cores; below 1 the cores were shared with other jobs)."""
+    rates, shares = [], []
     for _ in range(repeats):
-        start = time.perf_counter()
+        start, cpu = time.perf_counter(), time.process_time()
         run(pairs)
-        rates.append(len(pairs) / (time.perf_counter() - start))
-    return statistics.median(rates)
+        wall = time.perf_counter() - start
+        rates.append(len(pairs) / wall)
+        shares.append((time.process_time() - cpu) / wall)
+    return statistics.median(rates), statistics.median(shares)
 
 
 def main():
@@ -132,13 +136,16 @@ def main():
         print(f"| one do_intersect, {name} ({f['f_evaluations']} f evaluations) | {f['cpp_us']:.2f} µs | "
               f"{f['python_us']:.2f} µs | {f['overhead_us']:.2f} µs |")
     print()
-    print(f"| batch of {figures['pairs']} bunny pairs ({figures['pairs_intersecting']} intersecting) | queries/s |")
-    print("|---|---:|")
-    print(f"| do_intersect_many, 1 thread | {figures['batch_threads_1_qps']:.0f} |")
-    print(f"| do_intersect_many, 2 threads | {figures['batch_threads_2_qps']:.0f} |")
-    print(f"| Dask LocalCluster, 2 worker processes, chunks of 100 pairs | {figures['dask_2_workers_qps']:.0f} |")
-    print(f"| Dask LocalCluster, 2 worker processes, chunks of 10 pairs | "
-          f"{figures['dask_2_workers_chunk_10_qps']:.0f} |")
+    print(f"| batch of {figures['pairs']} bunny pairs ({figures['pairs_intersecting']} intersecting) | queries/s "
+          "| CPU share of this process |")
+    print("|---|---:|---:|")
+    rows = [("do_intersect_many, 1 thread", "batch_threads_1_qps"), ("do_intersect_many, 2 threads", "batch_threads_2_qps"),
+            ("Dask LocalCluster, 2 worker processes, chunks of 100 pairs", "dask_2_workers_qps"),
+            ("Dask LocalCluster, 2 worker processes, chunks of 10 pairs", "dask_2_workers_chunk_10_qps")]
+    for label, key in rows:
+        rate, share = figures[key]
+        shown = "— (the work runs in the workers)" if key.startswith("dask") else f"{share:.2f}"
+        print(f"| {label} | {rate:.0f} | {shown} |")
     print(f"\nload average before {figures['load_average_before']}, after {figures['load_average_after']}")
     if args.json:
         pathlib.Path(args.json).write_text(json.dumps(figures, indent=2))

@@ -442,7 +442,7 @@ status : str
     'intersecting', 'separate' (nothing found after the whole sampling) or 'budget_exhausted'
     (the evaluation budget ran out first: the "no" is not backed by the full sampling).
 points : numpy.ndarray
-    (M, 3) read-only float64 array of the points found, world coordinates.
+    (M, 3) float64 array of the points found, world coordinates (a new array at each access).
 f_values : numpy.ndarray
     (M, 2) array of f_A and f_B at the points (NaN where not evaluated).
 kinds : list of str
