@@ -1,15 +1,14 @@
 """Shared fixtures of the pytest suite of the Python module pccd.
 
 ctest runs each file with PYTHONPATH pointing at the built package and these variables set:
-PCCD_SOURCE_DIR (the source tree), PCCD_DATA_DIR (libcgal-demo's meshes, empty when absent),
-PCCD_CLI (the built pccd tool, when built) and PCCD_TEST_TMP (scratch space). A fixture whose
-resource is missing fails the test: the files that need one are registered as skipped by ctest
-when it was not found at configure time, so a test never passes without what it checks.
+PCCD_SOURCE_DIR (the source tree), PCCD_DATA_DIR (libcgal-demo's meshes, empty when absent) and
+PCCD_CLI (the built pccd tool, when built); scratch files go to build/test/python/tmp. A fixture
+whose resource is missing fails the test: the files that need one are registered as skipped by
+ctest when it was not found at configure time, so a test never passes without what it checks.
 """
 
 import os
 import pathlib
-import tempfile
 
 import numpy as np
 import pytest
