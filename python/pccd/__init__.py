@@ -56,6 +56,7 @@ from ._pccd import (
 )
 
 __all__ = [
+    "__version__",
     "Object",
     "Result",
     "do_intersect",

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import pccd
-from conftest import pose, same_result, sphere_points, torus_points
+from conftest import pose, same_result, sphere_points
 
 TOUCHING = pose((1, 1, 0), 0.4, (0.9, 0.0, 0.0))  # the sphere (radius 0.5) across the torus tube
 APART = pose((0, 0, 1), 0.0, (3.0, 0.0, 0.0))
