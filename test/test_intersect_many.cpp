@@ -45,8 +45,10 @@ const Objects& objects()
     return o;
 }
 
-/// `count` pairs at random orientations and distances 0 ... 2.8 (colliding and separate); every
-/// third pair has the torus first, every fifth the sphere against itself.
+/// `count` pairs at random orientations: every fourth (k = 1, 5, ...) at a distance of 2.6 ... 3.2
+/// between the centres, beyond the reach of the sphere (radius 1) and the torus (outer radius 1.4),
+/// so separate; the others at 0 ... 2.2, most of them colliding. Every third pair has the torus
+/// first, every fifth the sphere against itself.
 std::vector<Pair> make_pairs(std::size_t count)
 {
     const Objects& o = objects();
@@ -55,7 +57,7 @@ std::vector<Pair> make_pairs(std::size_t count)
     for (std::size_t k = 0; k < count; ++k) {
         const Eigen::Vector3d direction(PCCD::standard_normal(engine), PCCD::standard_normal(engine),
                                         PCCD::standard_normal(engine));
-        const double distance = PCCD::uniform_real(engine, 0.0, 2.8);
+        const double distance = k % 4 == 1 ? PCCD::uniform_real(engine, 2.6, 3.2) : PCCD::uniform_real(engine, 0.0, 2.2);
         const Rigid_transform_3<double> first(PCCD::uniform_random_rotation(engine), Eigen::Vector3d::Zero());
         const Rigid_transform_3<double> second(PCCD::uniform_random_rotation(engine), distance * direction.normalized());
         const Point_cloud_object<>* a = k % 3 == 1 ? &o.torus : &o.sphere;

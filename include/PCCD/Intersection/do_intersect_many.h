@@ -10,7 +10,6 @@
 #include <cstdint>
 #include <exception>
 #include <span>
-#include <string>
 #include <vector>
 
 #include <PCCD/Error.h>
