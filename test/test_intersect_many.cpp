@@ -204,4 +204,10 @@ TEST_CASE("Batch queries reject bad input with Invalid_input", "[intersection][b
                           Contains("min_samples must be >= 1"));
         CHECK_THROWS_AS(PCCD::do_intersect_many(pairs, {.threads = 2}, {.contact_core = 2.0}), PCCD::Invalid_input);
     }
+    SECTION("an absurd thread count is refused, not passed on to TBB")
+    {
+        CHECK_THROWS_WITH(PCCD::do_intersect_many(pairs, {.threads = 1'000'000}),
+                          Contains("threads 1000000 exceeds the limit 4096"));
+        CHECK_NOTHROW(PCCD::do_intersect_many(pairs, {.threads = PCCD::Batch_options::max_threads}));
+    }
 }

@@ -6,6 +6,7 @@
 #include "pccd_python.h"
 
 #include <PCCD/Error.h>
+#include <PCCD/Intersection/do_intersect_many.h>
 
 #include <cstddef>
 #include <functional>
@@ -74,7 +75,13 @@ PCCD::Point_cloud_object_options object_options(const py::kwargs& kwargs)
         {"sampling_radius_seed",
          [](auto& o, const py::handle& v, const std::string& k) { o.sampling_radius.seed = option_value<std::uint64_t>(v, k); }},
         {"leaf_size", [](auto& o, const py::handle& v, const std::string& k) { o.hierarchy.leaf_size = option_value<std::size_t>(v, k); }},
-        {"threads", [](auto& o, const py::handle& v, const std::string& k) { o.threads = option_value<unsigned>(v, k); }},
+        {"threads",
+         [](auto& o, const py::handle& v, const std::string& k) {
+             o.threads = option_value<unsigned>(v, k);
+             if (o.threads > PCCD::Batch_options::max_threads)
+                 throw py::value_error("Object(): threads " + std::to_string(o.threads) + " exceeds the limit " +
+                                       std::to_string(PCCD::Batch_options::max_threads) + " (0: all available)");
+         }},
     };
     PCCD::Point_cloud_object_options options;
     for (const auto& [key, value] : kwargs) {
@@ -174,8 +181,8 @@ normals : array_like, optional
     leaf_size : int
         Largest number of points in a hierarchy leaf (default 16).
     threads : int
-        Worker threads of the preprocessing; 0 (default) uses all. The result does not depend
-        on it.
+        Worker threads of the preprocessing, at most 4096; 0 (default) uses all. The result does
+        not depend on it.
 
 Raises
 ------

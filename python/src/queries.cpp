@@ -384,7 +384,8 @@ pairs : iterable of tuple
     Tuples (object_a, pose_a, object_b, pose_b), poses as in do_intersect (3x4, 4x4 or None). The
     same object may appear in any number of pairs.
 threads : int, optional
-    Worker threads; 0 (default) uses all available. The results do not depend on it.
+    Worker threads, at most 4096; 0 (default) uses all available. The results do not depend on
+    it.
 first_index : int, optional
     Index of pairs[0] in a larger batch split into chunks (default 0): pair i is seeded as pair
     first_index + i of the whole, so the chunks' results together equal the whole batch's.

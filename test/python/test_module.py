@@ -289,6 +289,10 @@ def test_batch_rejects_bad_pairs(shapes):
         pccd.do_intersect_many([(sphere, None, "torus", None)])
     with pytest.raises(ValueError, match="max_f_evaluations"):
         pccd.intersection_points_many([(sphere, None, torus, None)], max_f_evaluations=0)
+    with pytest.raises(ValueError, match="threads 1000000 exceeds the limit 4096"):
+        pccd.do_intersect_many([(sphere, None, torus, None)], threads=10**6)
+    with pytest.raises(ValueError, match="threads 1000000 exceeds the limit 4096"):
+        pccd.Object(sphere_points(100), threads=10**6)
 
 
 def test_batch_releases_the_gil(shapes):

@@ -36,8 +36,11 @@ struct Posed_pair {
 
 /// How a batch runs; the results never depend on it.
 struct Batch_options {
-    /// Worker threads; 0 (default) uses all available. Ignored without TBB (the pairs are then
-    /// answered one after the other).
+    /// The largest `threads` accepted: TBB crashes when asked for an arena of a few hundred thousand
+    /// threads, so absurd requests are refused with Invalid_input instead.
+    static constexpr unsigned max_threads = 4096;
+    /// Worker threads, at most max_threads; 0 (default) uses all available. Ignored without TBB
+    /// (the pairs are then answered one after the other).
     unsigned threads = 0;
     /// The index of the first pair in a larger batch that was split into chunks (e.g. to spread it
     /// over several machines): pair i of the call is seeded as pair first_index + i of the whole,
@@ -69,6 +72,9 @@ std::vector<Intersection_result> run_many(std::span<const Posed_pair<A, B>> pair
     // Everything that does not depend on the pair is checked once, before any work.
     check_options(options, function);
     policy.check();
+    if (batch.threads > Batch_options::max_threads)
+        throw Invalid_input(concat(function, ": threads ", batch.threads, " exceeds the limit ", Batch_options::max_threads,
+                                   " (0: all available)"));
     for (std::size_t i = 0; i < pairs.size(); ++i)
         if (pairs[i].a == nullptr || pairs[i].b == nullptr)
             throw Invalid_input(concat(function, ": pair ", i, " has no object ", pairs[i].a == nullptr ? "a" : "b",
@@ -107,8 +113,9 @@ std::vector<Intersection_result> run_many(std::span<const Posed_pair<A, B>> pair
 /// \tparam A, B models of CollisionObject (Point_cloud_object<K>).
 /// \tparam Policy a model of LeafIntersector for A and B: Interpolation_search (default) or
 ///         Randomized_sampling.
-/// \throws Invalid_input for invalid options or policy parameters or a pair with a null object
-///         (naming its index), before any query runs; an exception thrown by the query of a pair is
+/// \throws Invalid_input for invalid options or policy parameters, more than
+///         Batch_options::max_threads threads, or a pair with a null object (naming its index),
+///         before any query runs; an exception thrown by the query of a pair is
 ///         rethrown after the other pairs are done (the one of the lowest index if several threw).
 /// Thread safety: the objects are only read; the call may run concurrently with other queries on
 /// the same objects. Complexity: the sum of the queries' costs, divided among the threads; one
