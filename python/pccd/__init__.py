@@ -1,0 +1,69 @@
+"""
+pccd -- collision detection and intersection of point clouds
+=============================================================
+
+Python interface of PCCD, a C++20 library that answers whether two point clouds touch, and
+where, without reconstructing a mesh. Each cloud defines a smooth implicit surface (weighted
+least squares over geodesic neighbourhoods); two posed surfaces are intersected stochastically.
+
+Each cloud is preprocessed once into an `Object`; queries then pose objects by rigid transforms
+(3x4 ``[R | t]`` or 4x4 homogeneous numpy arrays) and answer in microseconds to milliseconds.
+
+Functions and classes
+---------------------
+read_points, write_points
+    Point files (PLY, OFF, XYZ/PWN) to and from numpy arrays.
+Object
+    A preprocessed point cloud; ``Object.save`` / ``Object.load`` keep it in a file.
+do_intersect
+    Whether two posed objects intersect (stops at the first point found).
+intersection_points
+    Points along the intersection curves.
+do_intersect_many, intersection_points_many
+    Many pairs in one call, on several threads (the GIL is released); bit for bit the
+    single queries seeded by `pair_seed`.
+Result
+    The answer: ``intersects``, ``status``, ``points`` (an (M, 3) array), ``counters``.
+
+Errors
+------
+Bad arrays, poses and options raise ValueError, unusable files OSError, both with PCCD's
+message naming the problem.
+
+Examples
+--------
+>>> import numpy as np, pccd
+>>> points, _ = pccd.read_points("bunny00.off")
+>>> bunny = pccd.Object(points)
+>>> turn = np.array([[0., -1., 0., 0.05], [1., 0., 0., 0.], [0., 0., 1., 0.]])
+>>> pccd.do_intersect(bunny, None, bunny, turn).intersects
+True
+
+The manual: doc/manual/python.md in PCCD's sources.
+"""
+
+from ._pccd import (
+    Object,
+    Result,
+    __version__,
+    do_intersect,
+    do_intersect_many,
+    intersection_points,
+    intersection_points_many,
+    pair_seed,
+    read_points,
+    write_points,
+)
+
+__all__ = [
+    "__version__",
+    "Object",
+    "Result",
+    "do_intersect",
+    "do_intersect_many",
+    "intersection_points",
+    "intersection_points_many",
+    "pair_seed",
+    "read_points",
+    "write_points",
+]

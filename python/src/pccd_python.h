@@ -1,0 +1,62 @@
+// python/src/pccd_python.h -- what the translation units of the Python module `pccd` share: the
+// object type it wraps, the conversions between numpy arrays and PCCD's types (points, poses), and
+// the functions that add each part of the module. The module is described in doc/manual/python.md.
+#pragma once
+
+#include <PCCD/Point_cloud_object.h>
+#include <PCCD/Rigid_transform_3.h>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <cstddef>
+#include <cstring>
+#include <string>
+
+namespace pccd_python {
+
+namespace py = pybind11;
+
+/// The preprocessed object of pccd.Object (copies share the data).
+using Object = PCCD::Point_cloud_object<>;
+
+/// An (N, 3) array argument read in place: float32 or float64 rows at any strides. Other numeric
+/// dtypes are converted to float64 first (the only copy), which `keep` then holds.
+struct Row_array {
+    py::array keep;
+    const char* data = nullptr;
+    std::size_t rows = 0;
+    py::ssize_t row_stride = 0;
+    py::ssize_t column_stride = 0;
+    bool single = false; // float32
+
+    double at(std::size_t i, int j) const
+    {
+        const char* p = data + py::ssize_t(i) * row_stride + j * column_stride;
+        if (single) {
+            float v;
+            std::memcpy(&v, p, sizeof v);
+            return double(v);
+        }
+        double v;
+        std::memcpy(&v, p, sizeof v);
+        return v;
+    }
+};
+
+/// `value` as an (N, 3) array of numbers; `name` is the argument's name in the ValueError raised
+/// for anything else (another shape, strings, objects, booleans, complex numbers).
+Row_array row_array(py::handle value, const char* name);
+
+/// A pose argument: a 3x4 [R | t] or 4x4 homogeneous array-like (last row 0 0 0 1), or None for
+/// the identity. Raises ValueError (PCCD::Invalid_input) naming `name` when it is not rigid.
+PCCD::Rigid_transform_3<double> pose_argument(py::handle value, const char* name);
+
+/// A read-only (N, 3) float64 view of the 3 x N column-major matrix `m`, kept alive by `owner`.
+py::array matrix_view(const Eigen::Matrix3Xd& m, py::handle owner);
+
+void add_io(py::module_& m);
+void add_object(py::module_& m);
+void add_queries(py::module_& m);
+
+} // namespace pccd_python

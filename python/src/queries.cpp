@@ -1,0 +1,545 @@
+// python/src/queries.cpp -- the intersection queries of pccd: do_intersect, intersection_points and
+// their batch forms do_intersect_many / intersection_points_many (PCCD/Intersection/
+// do_intersect_many.h), with Intersection_options and the leaf intersector's parameters as keyword
+// arguments, and pccd.Result, the answer with its points and counters. Every query runs with the
+// GIL released (doc/manual/python.md, "Queries").
+#include "pccd_python.h"
+
+#include <PCCD/Error.h>
+#include <PCCD/Intersection/Randomized_sampling.h>
+#include <PCCD/Intersection/do_intersect.h>
+#include <PCCD/Intersection/do_intersect_many.h>
+
+#include <pybind11/stl.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace pccd_python {
+
+namespace {
+
+/// What a query returns to Python: PCCD's result, converted on access.
+struct Result {
+    PCCD::Intersection_result r;
+};
+
+/// The options and the leaf intersector of one call.
+struct Query_parameters {
+    bool rst = false;
+    PCCD::Intersection_options options;
+    PCCD::Interpolation_search isearch;
+    PCCD::Randomized_sampling randomized;
+};
+
+/// The keyword arguments of a query, with PCCD's defaults.
+struct Query_arguments {
+    std::string method = "isearch";
+    std::uint64_t seed = PCCD::Intersection_options{}.seed;
+    std::optional<double> epsilon;
+    std::string region = "leaf_boxes";
+    std::string refinement = "projection";
+    std::optional<double> point_spacing;
+    std::size_t refinement_samples = PCCD::Intersection_options{}.refinement_samples;
+    std::optional<std::size_t> max_f_evaluations;
+    bool symmetric = true;
+    bool verify_contacts = true;
+    std::optional<double> contact_tolerance;
+    double contact_core = PCCD::Intersection_options{}.contact_core;
+    std::optional<std::size_t> samples, min_samples, max_samples;
+    std::optional<double> coverage_c;
+    std::optional<std::size_t> partner_candidates;
+    std::optional<double> epsilon_factor;
+    // Batch functions only.
+    unsigned threads = 0;
+    std::uint64_t first_index = 0;
+};
+
+Query_parameters parameters(const Query_arguments& arguments)
+{
+    const auto& [method, seed, epsilon, region, refinement, point_spacing, refinement_samples, max_f_evaluations,
+                 symmetric, verify_contacts, contact_tolerance, contact_core, samples, min_samples, max_samples,
+                 coverage_c, partner_candidates, epsilon_factor, threads, first_index] = arguments;
+    Query_parameters q;
+    if (method == "rst")
+        q.rst = true;
+    else if (method != "isearch")
+        throw py::value_error("method must be 'isearch' (interpolation search) or 'rst' (randomized sampling), not '" +
+                              method + "'");
+    PCCD::Intersection_options& o = q.options;
+    o.seed = seed;
+    o.epsilon = epsilon;
+    if (region == "object_boxes")
+        o.region = PCCD::Overlap_region::object_boxes;
+    else if (region != "leaf_boxes")
+        throw py::value_error("region must be 'leaf_boxes' or 'object_boxes', not '" + region + "'");
+    if (refinement == "none")
+        o.refinement = PCCD::Refinement::none;
+    else if (refinement == "sampling")
+        o.refinement = PCCD::Refinement::sampling;
+    else if (refinement != "projection")
+        throw py::value_error("refinement must be 'projection', 'sampling' or 'none', not '" + refinement + "'");
+    o.point_spacing = point_spacing;
+    o.refinement_samples = refinement_samples;
+    o.max_f_evaluations = max_f_evaluations;
+    o.symmetric = symmetric;
+    o.verify_contacts = verify_contacts;
+    o.contact_tolerance = contact_tolerance;
+    o.contact_core = contact_core;
+    const auto isearch_only = [&](bool given, const char* name) {
+        if (given && q.rst)
+            throw py::value_error(std::string(name) + " is a parameter of method='isearch', not of method='rst'");
+    };
+    isearch_only(samples.has_value(), "samples");
+    isearch_only(min_samples.has_value(), "min_samples");
+    isearch_only(partner_candidates.has_value(), "partner_candidates");
+    if (epsilon_factor && !q.rst)
+        throw py::value_error("epsilon_factor is a parameter of method='rst', not of method='isearch'");
+    if (samples) q.isearch.samples = samples;
+    if (min_samples) q.isearch.min_samples = *min_samples;
+    if (partner_candidates) q.isearch.partner_candidates = *partner_candidates;
+    if (max_samples) (q.rst ? q.randomized.max_samples : q.isearch.max_samples) = *max_samples;
+    if (coverage_c) (q.rst ? q.randomized.coverage_c : q.isearch.coverage_c) = *coverage_c;
+    if (epsilon_factor) q.randomized.epsilon_factor = *epsilon_factor;
+    return q;
+}
+
+template <class T>
+void read_argument(T& field, const py::handle& value, const char* function, std::string_view key)
+{
+    try {
+        field = value.cast<T>();
+    } catch (const py::cast_error&) {
+        throw py::type_error(std::string(function) + "(): " + std::string(key) + " cannot be " +
+                             std::string(py::str(py::repr(value))));
+    }
+}
+
+/// The keyword arguments of a call, parsed by hand (only the keys given are looked at: pybind11's
+/// per-argument matching of twenty defaults would cost more than a small query). An unknown key
+/// raises TypeError, like any Python function.
+Query_arguments query_arguments(const py::kwargs& kwargs, bool batch, const char* function)
+{
+    Query_arguments a;
+    for (const auto& [key_object, value] : kwargs) {
+        Py_ssize_t size = 0;
+        const char* text = PyUnicode_AsUTF8AndSize(key_object.ptr(), &size);
+        if (text == nullptr) throw py::error_already_set();
+        const std::string_view key(text, std::size_t(size));
+        const auto is = [&](std::string_view name) { return key == name; };
+        if (is("method")) read_argument(a.method, value, function, key);
+        else if (is("seed")) read_argument(a.seed, value, function, key);
+        else if (is("epsilon")) read_argument(a.epsilon, value, function, key);
+        else if (is("region")) read_argument(a.region, value, function, key);
+        else if (is("refinement")) read_argument(a.refinement, value, function, key);
+        else if (is("point_spacing")) read_argument(a.point_spacing, value, function, key);
+        else if (is("refinement_samples")) read_argument(a.refinement_samples, value, function, key);
+        else if (is("max_f_evaluations")) read_argument(a.max_f_evaluations, value, function, key);
+        else if (is("symmetric")) read_argument(a.symmetric, value, function, key);
+        else if (is("verify_contacts")) read_argument(a.verify_contacts, value, function, key);
+        else if (is("contact_tolerance")) read_argument(a.contact_tolerance, value, function, key);
+        else if (is("contact_core")) read_argument(a.contact_core, value, function, key);
+        else if (is("samples")) read_argument(a.samples, value, function, key);
+        else if (is("min_samples")) read_argument(a.min_samples, value, function, key);
+        else if (is("max_samples")) read_argument(a.max_samples, value, function, key);
+        else if (is("coverage_c")) read_argument(a.coverage_c, value, function, key);
+        else if (is("partner_candidates")) read_argument(a.partner_candidates, value, function, key);
+        else if (is("epsilon_factor")) read_argument(a.epsilon_factor, value, function, key);
+        else if (batch && is("threads")) read_argument(a.threads, value, function, key);
+        else if (batch && is("first_index")) read_argument(a.first_index, value, function, key);
+        else
+            throw py::type_error(std::string(function) + "() got an unexpected keyword argument '" + std::string(key) +
+                                 "'");
+    }
+    return a;
+}
+
+/// The parameters of a call: the defaults, built once, when no keyword is given.
+Query_parameters call_parameters(const py::kwargs& kwargs, const char* function)
+{
+    static const Query_parameters defaults = parameters(Query_arguments{});
+    return kwargs.empty() ? defaults : parameters(query_arguments(kwargs, false, function));
+}
+
+/// Calls `f(policy)` with the leaf intersector the parameters name.
+template <class F>
+auto with_policy(const Query_parameters& q, const F& f)
+{
+    return q.rst ? f(q.randomized) : f(q.isearch);
+}
+
+Result query(const Object& a, const py::handle& pose_a, const Object& b, const py::handle& pose_b, bool first_hit,
+             const Query_parameters& q)
+{
+    const PCCD::Rigid_transform_3<double> ta = pose_argument(pose_a, "pose_a");
+    const PCCD::Rigid_transform_3<double> tb = pose_argument(pose_b, "pose_b");
+    py::gil_scoped_release release;
+    return with_policy(q, [&](const auto& policy) {
+        return Result{first_hit ? PCCD::do_intersect(a, ta, b, tb, q.options, policy)
+                                : PCCD::intersection_points(a, ta, b, tb, q.options, policy)};
+    });
+}
+
+std::vector<Result> many(const py::iterable& pairs, unsigned threads, std::uint64_t first_index, bool first_hit,
+                         const Query_parameters& q)
+{
+    std::vector<PCCD::Posed_pair<Object>> list;
+    std::vector<py::object> objects; // alive while the GIL is released
+    std::size_t i = 0;
+    for (const py::handle item : pairs) {
+        const std::string where = "pairs[" + std::to_string(i) + "]";
+        if (!PySequence_Check(item.ptr()) || py::isinstance<py::str>(item) || py::len(item) != 4)
+            throw py::value_error(where + " must be a tuple (object_a, pose_a, object_b, pose_b)");
+        const py::sequence pair = py::reinterpret_borrow<py::sequence>(item);
+        const py::object a = pair[0];
+        const py::object b = pair[2];
+        if (!py::isinstance<Object>(a) || !py::isinstance<Object>(b))
+            throw py::type_error(where + ": items 0 and 2 must be pccd.Object instances");
+        PCCD::Posed_pair<Object> posed;
+        posed.a = &a.cast<const Object&>();
+        posed.b = &b.cast<const Object&>();
+        try {
+            posed.pose_a = pose_argument(pair[1], "pose_a");
+            posed.pose_b = pose_argument(pair[3], "pose_b");
+        } catch (const std::exception& e) {
+            throw py::value_error(where + ": " + e.what());
+        }
+        list.push_back(posed);
+        objects.push_back(a);
+        objects.push_back(b);
+        ++i;
+    }
+    std::vector<PCCD::Intersection_result> results;
+    {
+        py::gil_scoped_release release;
+        const PCCD::Batch_options batch{.threads = threads, .first_index = first_index};
+        results = with_policy(q, [&](const auto& policy) {
+            return first_hit ? PCCD::do_intersect_many(list, batch, q.options, policy)
+                             : PCCD::intersection_points_many(list, batch, q.options, policy);
+        });
+    }
+    std::vector<Result> out;
+    out.reserve(results.size());
+    for (PCCD::Intersection_result& r : results) out.push_back(Result{std::move(r)});
+    return out;
+}
+
+const char* kind_name(PCCD::Intersection_point_kind kind)
+{
+    switch (kind) {
+    case PCCD::Intersection_point_kind::approximate: return "approximate";
+    case PCCD::Intersection_point_kind::refined: return "refined";
+    case PCCD::Intersection_point_kind::sampled: return "sampled";
+    }
+    return "unknown";
+}
+
+py::dict counters_dict(const PCCD::Intersection_counters& c)
+{
+    py::dict d;
+    d["f_evaluations"] = c.f_evaluations;
+    d["brackets_tried"] = c.brackets_tried;
+    d["partner_candidates"] = c.partner_candidates;
+    d["brackets_found"] = c.brackets_found;
+    d["search_steps"] = c.search_steps;
+    d["bisection_steps"] = c.bisection_steps;
+    d["samples"] = c.samples;
+    d["candidate_points"] = c.candidate_points;
+    d["refinement_samples"] = c.refinement_samples;
+    d["node_pairs"] = c.node_pairs;
+    d["leaf_pairs"] = c.leaf_pairs;
+    d["candidates_rejected"] = c.candidates_rejected;
+    return d;
+}
+
+const std::string query_doc_parameters = R"doc(method : {'isearch', 'rst'}, optional
+    The leaf intersector: 'isearch', the interpolation search (default), or 'rst', randomized
+    sampling.
+seed : int, optional
+    Seed of every random choice (default 24301 = 0x5eed). The same seed gives the same answer,
+    points and counters, on every platform and for any number of threads.
+epsilon : float, optional
+    Tolerance on |f| (world units); None (default): automatic, a fraction of the smaller sampling
+    radius.
+region : {'leaf_boxes', 'object_boxes'}, optional
+    Where to look: overlapping hierarchy leaves (default) or the intersection of the two
+    objects' boxes.
+refinement : {'projection', 'sampling', 'none'}, optional
+    Refinement of the points of intersection_points when `verify_contacts` is False (default
+    'projection').
+point_spacing : float, optional
+    Smallest distance between two returned points; None (default): the larger mean spacing of
+    the two clouds.
+refinement_samples : int, optional
+    Samples per point with refinement='sampling' (default 64).
+max_f_evaluations : int, optional
+    Budget of evaluations of f; None (default): no budget. A query that runs out answers with
+    status 'budget_exhausted'.
+symmetric : bool, optional
+    Sample both objects (default True) or only the one with fewer candidate points.
+verify_contacts : bool, optional
+    Accept a candidate only where both surfaces reach a common zero inside their domains
+    (default True).
+contact_tolerance : float, optional
+    Tolerance of that verification; None (default): 0.05 times the smaller sampling radius.
+contact_core : float, optional
+    Fraction of the domain radii a verified contact must lie within, in (0, 1] (default 0.6).
+samples, min_samples, partner_candidates : int, optional
+    Interpolation search only: exact sample count per role, least sample count (default 200),
+    partner candidates per bracketing sample (default 4).
+max_samples : int, optional
+    Most samples per role (isearch, default 400) or per query (rst, default 20000).
+coverage_c : float, optional
+    c of the covering formula (default 3.5).
+epsilon_factor : float, optional
+    RST only: the automatic epsilon as a fraction of the smaller sampling radius (default 0.35).)doc";
+
+const std::string do_intersect_doc = std::string(R"doc(Whether two posed objects intersect.
+
+The search stops at the first intersection point found (PCCD::do_intersect), which the result
+carries.
+
+Parameters
+----------
+a, b : Object
+    The two objects.
+pose_a, pose_b : array_like or None
+    Rigid motions from each object's frame to the world: a 3x4 array [R | t] or a 4x4
+    homogeneous matrix (last row 0 0 0 1); None is the identity. A matrix that scales, shears or
+    reflects is rejected.
+)doc") + query_doc_parameters + R"doc(
+
+Returns
+-------
+Result
+    ``intersects``, ``status``, ``points`` (at most one), ``counters``.
+
+Raises
+------
+ValueError
+    A pose that is not a 3x4 or 4x4 rigid transform (wrong shape, NaN, scaling, shear,
+    reflection) or an invalid option; the message names it.
+
+See Also
+--------
+intersection_points : points along the intersection curves.
+do_intersect_many : many pairs in one call, on several threads.
+
+Notes
+-----
+The objects are only read and the GIL is released during the query: several Python threads may
+query the same objects at once.
+
+Examples
+--------
+>>> pose_b = np.array([[0., -1., 0., 0.5], [1., 0., 0., 0.], [0., 0., 1., 0.]])
+>>> r = pccd.do_intersect(bunny, None, bunny, pose_b, seed=7)
+>>> r.intersects, r.status, r.points.shape
+(True, 'intersecting', (1, 3))
+)doc";
+
+const std::string intersection_points_doc = std::string(R"doc(Points on the intersection curves of two posed objects.
+
+The whole sample the leaf intersector asks for is searched (PCCD::intersection_points); the
+points are no two closer than `point_spacing`, in world coordinates.
+
+Parameters
+----------
+a, b : Object
+    The two objects.
+pose_a, pose_b : array_like or None
+    3x4 or 4x4 rigid transforms (see do_intersect); None is the identity.
+)doc") + query_doc_parameters + R"doc(
+
+Returns
+-------
+Result
+    ``points`` holds an (M, 3) array of the points found (M = 0 when the objects are apart).
+
+Raises
+------
+ValueError
+    As do_intersect.
+
+See Also
+--------
+do_intersect, intersection_points_many
+
+Examples
+--------
+>>> curve = pccd.intersection_points(bunny, None, bunny, pose_b)
+>>> pccd.write_points("curve.ply", curve.points)
+)doc";
+
+const std::string many_doc_head = R"doc(
+
+Parameters
+----------
+pairs : iterable of tuple
+    Tuples (object_a, pose_a, object_b, pose_b), poses as in do_intersect (3x4, 4x4 or None). The
+    same object may appear in any number of pairs.
+threads : int, optional
+    Worker threads, at most 4096; 0 (default) uses all available. The results do not depend on
+    it.
+first_index : int, optional
+    Index of pairs[0] in a larger batch split into chunks (default 0): pair i is seeded as pair
+    first_index + i of the whole, so the chunks' results together equal the whole batch's.
+)doc";
+
+const std::string many_doc_tail = R"doc(
+
+Returns
+-------
+list of Result
+    One result per pair, in input order. Result i is exactly (bit for bit) what the single query
+    returns with ``seed=pccd.pair_seed(seed, first_index + i)``, for any number of threads.
+
+Raises
+------
+ValueError
+    A pair that is not a 4-tuple, a bad pose (the message names the pair), or an invalid option;
+    nothing is computed then.
+TypeError
+    Items 0 and 2 of a pair are not Object instances.
+
+Notes
+-----
+The GIL is released while the pairs are answered (on TBB's threads).
+)doc";
+
+const std::string do_intersect_many_doc =
+    "do_intersect for many pairs in one call, on several threads." + many_doc_head + query_doc_parameters +
+    many_doc_tail + R"doc(
+See Also
+--------
+pair_seed, intersection_points_many
+
+Examples
+--------
+>>> pairs = [(bunny, None, bunny, pose) for pose in poses]
+>>> [r.intersects for r in pccd.do_intersect_many(pairs, threads=2)]
+)doc";
+
+const std::string intersection_points_many_doc =
+    "intersection_points for many pairs in one call, on several threads." + many_doc_head +
+    query_doc_parameters + many_doc_tail + R"doc(
+See Also
+--------
+pair_seed, do_intersect_many
+)doc";
+
+const char* result_doc = R"doc(The answer of an intersection query.
+
+Attributes
+----------
+intersects : bool
+    True when an intersection was found (also ``bool(result)``).
+status : str
+    'intersecting', 'separate' (nothing found after the whole sampling) or 'budget_exhausted'
+    (the evaluation budget ran out first: the "no" is not backed by the full sampling).
+points : numpy.ndarray
+    (M, 3) float64 array of the points found, world coordinates (a new array at each access).
+f_values : numpy.ndarray
+    (M, 2) array of f_A and f_B at the points (NaN where not evaluated).
+kinds : list of str
+    How each point was obtained: 'approximate', 'refined' or 'sampled'.
+counters : dict
+    The query's work counters (f_evaluations, brackets_tried, ...), deterministic for a seed.
+closest_estimate : float
+    RST only: the smallest max(|f_A|, |f_B|) over its samples (inf when none had both).
+)doc";
+
+} // namespace
+
+void add_queries(py::module_& m)
+{
+    py::class_<Result>(m, "Result", result_doc)
+        .def_property_readonly("intersects", [](const Result& r) { return r.r.intersects; })
+        .def_property_readonly("status", [](const Result& r) { return PCCD::to_string(r.r.status); })
+        .def_property_readonly("points",
+                               [](const Result& r) {
+                                   py::array_t<double> a({py::ssize_t(r.r.points.size()), py::ssize_t(3)});
+                                   auto out = a.mutable_unchecked<2>();
+                                   for (std::size_t i = 0; i < r.r.points.size(); ++i)
+                                       for (int j = 0; j < 3; ++j) out(py::ssize_t(i), j) = r.r.points[i].position(j);
+                                   return a;
+                               })
+        .def_property_readonly("f_values",
+                               [](const Result& r) {
+                                   py::array_t<double> a({py::ssize_t(r.r.points.size()), py::ssize_t(2)});
+                                   auto out = a.mutable_unchecked<2>();
+                                   for (std::size_t i = 0; i < r.r.points.size(); ++i) {
+                                       out(py::ssize_t(i), 0) = r.r.points[i].f_a;
+                                       out(py::ssize_t(i), 1) = r.r.points[i].f_b;
+                                   }
+                                   return a;
+                               })
+        .def_property_readonly("kinds",
+                               [](const Result& r) {
+                                   py::list kinds;
+                                   for (const auto& p : r.r.points) kinds.append(kind_name(p.kind));
+                                   return kinds;
+                               })
+        .def_property_readonly("counters", [](const Result& r) { return counters_dict(r.r.counters); })
+        .def_property_readonly("closest_estimate", [](const Result& r) { return r.r.closest_estimate; })
+        .def("__bool__", [](const Result& r) { return r.r.intersects; })
+        .def("__repr__", [](const Result& r) {
+            return std::string("<pccd.Result: ") + PCCD::to_string(r.r.status) + ", " + std::to_string(r.r.points.size()) +
+                   " point" + (r.r.points.size() == 1 ? "" : "s") + ", " + std::to_string(r.r.counters.f_evaluations) +
+                   " f evaluations>";
+        });
+
+    m.def(
+        "do_intersect",
+        [](const Object& a, const py::object& pose_a, const Object& b, const py::object& pose_b,
+           const py::kwargs& kwargs) {
+            return query(a, pose_a, b, pose_b, true, call_parameters(kwargs, "do_intersect"));
+        },
+        py::arg("a"), py::arg("pose_a"), py::arg("b"), py::arg("pose_b"), do_intersect_doc.c_str());
+    m.def(
+        "intersection_points",
+        [](const Object& a, const py::object& pose_a, const Object& b, const py::object& pose_b,
+           const py::kwargs& kwargs) {
+            return query(a, pose_a, b, pose_b, false, call_parameters(kwargs, "intersection_points"));
+        },
+        py::arg("a"), py::arg("pose_a"), py::arg("b"), py::arg("pose_b"), intersection_points_doc.c_str());
+    m.def(
+        "do_intersect_many",
+        [](const py::iterable& pairs, const py::kwargs& kwargs) {
+            const Query_arguments arguments = query_arguments(kwargs, true, "do_intersect_many");
+            return many(pairs, arguments.threads, arguments.first_index, true, parameters(arguments));
+        },
+        py::arg("pairs"), do_intersect_many_doc.c_str());
+    m.def(
+        "intersection_points_many",
+        [](const py::iterable& pairs, const py::kwargs& kwargs) {
+            const Query_arguments arguments = query_arguments(kwargs, true, "intersection_points_many");
+            return many(pairs, arguments.threads, arguments.first_index, false, parameters(arguments));
+        },
+        py::arg("pairs"), intersection_points_many_doc.c_str());
+    m.def("pair_seed", &PCCD::pair_seed, py::arg("seed"), py::arg("index"),
+          R"doc(The seed of pair `index` of a batch whose seed is `seed`.
+
+Pair i of ``do_intersect_many(pairs, seed=s, first_index=k)`` is answered exactly as
+``do_intersect(*pairs[i], seed=pair_seed(s, k + i))``. The value is the SplitMix64 output
+function of s + (index + 1) * 0x9e3779b97f4a7c15 modulo 2**64.
+
+Parameters
+----------
+seed : int
+    The batch's seed (0 <= seed < 2**64).
+index : int
+    The pair's index in the whole batch.
+
+Returns
+-------
+int
+)doc");
+}
+
+} // namespace pccd_python

@@ -1,0 +1,56 @@
+"""examples/python/dask_many_pairs.py on a LocalCluster of 2 worker processes: its results,
+gathered from the workers, equal one pccd.do_intersect_many (intersection_points_many) call over
+the same pairs, bit for bit."""
+
+import os
+import subprocess
+import sys
+
+import numpy as np
+
+import pccd
+
+
+def run_example(source_dir, tmp, *arguments):
+    script = source_dir / "examples" / "python" / "dask_many_pairs.py"
+    out = tmp / "results.npz"
+    done = subprocess.run([sys.executable, str(script), "--procedural", "--workers", "2", "--work", str(tmp),
+                           "--out", str(out), *arguments],
+                          capture_output=True, text=True, timeout=600, env=dict(os.environ))
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "on 2 workers" in done.stdout, done.stdout
+    return np.load(out)
+
+
+def check_against_batch(saved):
+    objects = [pccd.Object.load(f) for f in saved["files"]]
+    pairs = [(objects[a], pa, objects[b], pb)
+             for a, pa, b, pb in zip(saved["index_a"], saved["pose_a"], saved["index_b"], saved["pose_b"])]
+    query = pccd.do_intersect_many if str(saved["mode"]) == "first" else pccd.intersection_points_many
+    truth = query(pairs, threads=2, seed=int(saved["seed"]))
+    assert 0 < sum(r.intersects for r in truth) < len(truth)
+    names = [str(n) for n in saved["counter_names"]]
+    offsets = np.concatenate([[0], np.cumsum(saved["point_counts"])])
+    for i, r in enumerate(truth):
+        assert bool(saved["intersects"][i]) == r.intersects, i
+        assert str(saved["status"][i]) == r.status, i
+        assert dict(zip(names, saved["counters"][i].tolist())) == r.counters, i
+        assert np.array_equal(saved["points"][offsets[i]:offsets[i + 1]], r.points), i
+
+
+def test_dask_example_equals_do_intersect_many(source_dir, tmp):
+    saved = run_example(source_dir, tmp, "--pairs", "150", "--chunk", "16")
+    assert len(saved["intersects"]) == 150 and int(saved["workers"]) == 2
+    check_against_batch(saved)
+
+
+def test_dask_example_equals_intersection_points_many(source_dir, tmp):
+    saved = run_example(source_dir, tmp, "--pairs", "40", "--chunk", "7", "--mode", "all", "--seed", "5")
+    assert saved["points"].shape[0] > 100
+    check_against_batch(saved)
+
+
+def test_readme_quotes_the_quickstart(source_dir):
+    """The README's Python example is examples/python/quickstart.py, verbatim."""
+    quickstart = (source_dir / "examples" / "python" / "quickstart.py").read_text().rstrip("\n")
+    assert "```python\n" + quickstart + "\n```" in (source_dir / "README.md").read_text()
