@@ -47,6 +47,8 @@ struct Query_arguments {
     std::optional<double> point_spacing;
     std::size_t refinement_samples = PCCD::Intersection_options{}.refinement_samples;
     std::optional<std::size_t> max_f_evaluations;
+    std::string traversal = "likelihood";
+    std::optional<double> max_time_us;
     bool symmetric = true;
     bool verify_contacts = true;
     std::optional<double> contact_tolerance;
@@ -63,7 +65,7 @@ struct Query_arguments {
 Query_parameters parameters(const Query_arguments& arguments)
 {
     const auto& [method, seed, epsilon, region, refinement, point_spacing, refinement_samples, max_f_evaluations,
-                 symmetric, verify_contacts, contact_tolerance, contact_core, samples, min_samples, max_samples,
+                 traversal, max_time_us, symmetric, verify_contacts, contact_tolerance, contact_core, samples, min_samples, max_samples,
                  coverage_c, partner_candidates, epsilon_factor, threads, first_index] = arguments;
     Query_parameters q;
     if (method == "rst")
@@ -87,6 +89,15 @@ Query_parameters parameters(const Query_arguments& arguments)
     o.point_spacing = point_spacing;
     o.refinement_samples = refinement_samples;
     o.max_f_evaluations = max_f_evaluations;
+    if (traversal == "flat")
+        o.traversal = PCCD::Traversal::flat;
+    else if (traversal == "depth_first")
+        o.traversal = PCCD::Traversal::depth_first;
+    else if (traversal == "likelihood")
+        o.traversal = PCCD::Traversal::likelihood;
+    else
+        throw py::value_error("traversal must be 'likelihood', 'depth_first' or 'flat', not '" + traversal + "'");
+    o.max_time_us = max_time_us;
     o.symmetric = symmetric;
     o.verify_contacts = verify_contacts;
     o.contact_tolerance = contact_tolerance;
@@ -140,6 +151,8 @@ Query_arguments query_arguments(const py::kwargs& kwargs, bool batch, const char
         else if (is("point_spacing")) read_argument(a.point_spacing, value, function, key);
         else if (is("refinement_samples")) read_argument(a.refinement_samples, value, function, key);
         else if (is("max_f_evaluations")) read_argument(a.max_f_evaluations, value, function, key);
+        else if (is("traversal")) read_argument(a.traversal, value, function, key);
+        else if (is("max_time_us")) read_argument(a.max_time_us, value, function, key);
         else if (is("symmetric")) read_argument(a.symmetric, value, function, key);
         else if (is("verify_contacts")) read_argument(a.verify_contacts, value, function, key);
         else if (is("contact_tolerance")) read_argument(a.contact_tolerance, value, function, key);
@@ -279,7 +292,13 @@ refinement_samples : int, optional
     Samples per point with refinement='sampling' (default 64).
 max_f_evaluations : int, optional
     Budget of evaluations of f; None (default): no budget. A query that runs out answers with
-    status 'budget_exhausted'.
+    status 'undecided'.
+traversal : {'likelihood', 'depth_first', 'flat'}, optional
+    How the two objects' hierarchies are walked (default 'likelihood'); 'flat' is the published
+    method. See doc/manual/hierarchy.md.
+max_time_us : float, optional
+    Time budget in microseconds; None (default): no limit. A query that runs out before finding a
+    contact answers with status 'undecided' (never 'separate').
 symmetric : bool, optional
     Sample both objects (default True) or only the one with fewer candidate points.
 verify_contacts : bool, optional
@@ -440,7 +459,7 @@ Attributes
 intersects : bool
     True when an intersection was found (also ``bool(result)``).
 status : str
-    'intersecting', 'separate' (nothing found after the whole sampling) or 'budget_exhausted'
+    'intersecting', 'separate' (nothing found after the whole sampling) or 'undecided'
     (the evaluation budget ran out first: the "no" is not backed by the full sampling).
 points : numpy.ndarray
     (M, 3) float64 array of the points found, world coordinates (a new array at each access).

@@ -99,6 +99,23 @@ TEST_CASE("Reach tests agree with brute force over all point pairs", "[hierarchy
     }
 }
 
+TEST_CASE("nearest_point finds the nearest point of the cloud", "[hierarchy]")
+{
+    const Clouds c(3, 0.2);
+    PCCD::Random_engine engine(17);
+    for (int k = 0; k < 300; ++k) {
+        const Eigen::Vector3d q(PCCD::uniform_real(engine, -2, 2), PCCD::uniform_real(engine, -2, 2),
+                                PCCD::uniform_real(engine, -2, 2));
+        double best = std::numeric_limits<double>::infinity();
+        for (Eigen::Index b = 0; b < c.pt.cols(); ++b) best = std::min(best, (c.pt.col(b) - q).squaredNorm());
+        const auto [index, squared] = PCCD::nearest_point(c.t, q);
+        REQUIRE(index < c.t.size());
+        CHECK(squared == best);
+        CHECK((c.t.ordered_points().col(Eigen::Index(index)).head<3>() - q).squaredNorm() == best);
+    }
+    CHECK(PCCD::nearest_point(PCCD::Point_cloud_hierarchy(), Eigen::Vector3d::Zero()).first == 0);
+}
+
 TEST_CASE("Grown boxes: separated boxes are never reported overlapping", "[hierarchy]")
 {
     // Two unit boxes 1 apart along x (after the motion): they overlap exactly when the margins sum

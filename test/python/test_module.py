@@ -177,7 +177,15 @@ def test_answers_and_result(shapes):
     assert np.all(np.abs(curve.f_values) < 0.05 * min(sphere.sampling_radius, torus.sampling_radius))
     budget = pccd.intersection_points(sphere, pose((0, 0, 1), 0, (1.25, 0, 0)), torus, None, max_f_evaluations=3)
     assert budget.counters["f_evaluations"] <= 3 + 2  # one bracket or step may finish past the budget
-    assert budget.status in ("budget_exhausted", "intersecting")
+    assert budget.status in ("undecided", "intersecting")
+    # The hierarchy traversals: the flat (published) walk agrees; an exhausted time budget is undecided.
+    assert pccd.do_intersect(sphere, TOUCHING, torus, None, traversal="flat").intersects
+    assert pccd.do_intersect(sphere, TOUCHING, torus, None, traversal="depth_first").intersects
+    assert pccd.do_intersect(sphere, TOUCHING, torus, None, max_time_us=1e-3).status == "undecided"
+    with pytest.raises(ValueError, match="traversal"):
+        pccd.do_intersect(sphere, TOUCHING, torus, None, traversal="breadth")
+    with pytest.raises(ValueError, match="max_time_us"):
+        pccd.do_intersect(sphere, TOUCHING, torus, None, max_time_us=-1.0)
 
 
 def test_same_seed_same_answer_other_seed_other_work(shapes):

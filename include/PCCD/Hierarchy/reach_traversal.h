@@ -108,6 +108,37 @@ inline bool within_reach(const Point_cloud_hierarchy& t, const Eigen::Vector3d& 
     return false;
 }
 
+/// The point of t nearest to q (t's local frame): its position in hierarchy order (a column of
+/// t.ordered_points()) and its squared distance; {t.size(), +inf} for an empty hierarchy. Exact
+/// (branch and bound over the boxes, nearer child first). O(height) nodes for a point near t.
+inline std::pair<std::size_t, double> nearest_point(const Point_cloud_hierarchy& t, const Eigen::Vector3d& q)
+{
+    std::pair<std::size_t, double> best{t.size(), std::numeric_limits<double>::infinity()};
+    if (t.empty()) return best;
+    using Index = Point_cloud_hierarchy::Index;
+    const Eigen::Matrix4Xd& points = t.ordered_points();
+    Index stack[64];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const Index i = stack[--top];
+        const auto& node = t.node(i);
+        if (node.box.squaredExteriorDistance(q) >= best.second) continue;
+        if (node.is_leaf()) {
+            for (Index k = node.first; k < node.first + node.count; ++k) {
+                const double d = (points.col(k).head<3>() - q).squaredNorm();
+                if (d < best.second) best = {k, d};
+            }
+            continue;
+        }
+        Index near = t.left(i), far = t.right(i);
+        if (t.node(far).box.squaredExteriorDistance(q) < t.node(near).box.squaredExteriorDistance(q)) std::swap(near, far);
+        stack[top++] = far;
+        stack[top++] = near;
+    }
+    return best;
+}
+
 /// Calls `visit(leaf_s, leaf_t)` for every pair of leaves whose boxes may hold a point of s within
 /// the reach (per `rule_t`) of a point of t: s's box mapped by `s_to_t`, t's box grown by its
 /// node's largest reach (`either`: s's box grown by s's reach or t's by t's, i.e. pairs where a

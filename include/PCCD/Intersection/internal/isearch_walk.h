@@ -1,0 +1,138 @@
+// PCCD/Intersection/internal/isearch_walk.h -- first-hit interpolation search over a walk of the two
+// objects' hierarchies (doc/manual/hierarchy.md, "Traversal policies"): random probes, then the
+// leaf pairs of for_each_leaf_pair_within_reach, whose points within the other leaf's reach are
+// sampled in their role once each, skipping points a sample already covers. Internal to
+// Interpolation_search.h.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <type_traits>
+#include <unordered_set>
+
+#include <Eigen/Core>
+
+#include <PCCD/Hierarchy/Point_cloud_hierarchy.h>
+#include <PCCD/Hierarchy/reach_traversal.h>
+#include <PCCD/Intersection/Intersection_options.h>
+#include <PCCD/Intersection/internal/Covering_grid.h>
+#include <PCCD/Intersection/internal/Query_state.h>
+#include <PCCD/Intersection/internal/isearch_role.h>
+#include <PCCD/Random.h>
+#include <PCCD/Rigid_transform_3.h>
+
+namespace PCCD::internal {
+
+/// One probe of s for a point within the reach of t: from a random point of s (uniform, with
+/// replacement), up to `steps` alternating nearest-point steps (the nearest point of t, then the
+/// nearest point of s to that), which descend to where the two clouds come closest, i.e. to where
+/// they cross in a deep overlap. The first point of s found within the reach of t is sampled in
+/// `role` unless it was sampled or covered already. Returns false when the query must stop.
+template <class Role_type>
+inline bool probe(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t, const Reach_rule& rule_t,
+                  std::size_t cap, std::unordered_set<std::uint32_t>& done, Covering_grid& cover, Role_type& role,
+                  std::size_t steps)
+{
+    if (role.taken >= cap || s.empty()) return true;
+    const Rigid_transform_3<double> t_to_s = role.s_to_t.inverse();
+    auto k = std::size_t(uniform_index(role.state.engine, s.size()));
+    for (std::size_t step = 0;; ++step) {
+        const Eigen::Vector3d local = s.ordered_points().col(Eigen::Index(k)).head<3>();
+        const auto [m, squared] = nearest_point(t, role.s_to_t.transform_point(local));
+        const double reach = rule_t(t.ordered_points()(3, Eigen::Index(m)));
+        if (squared <= reach * reach) {
+            const std::uint32_t index = s.order()[k];
+            if (cover.covers(local) || !done.insert(index).second) return true;
+            cover.add(local);
+            ++role.state.counters.candidate_points;
+            return role.sample(index) && !role.state.stop();
+        }
+        if (step >= steps) return true;
+        const auto next = nearest_point(s, t_to_s.transform_point(t.ordered_points().col(Eigen::Index(m)).head<3>())).first;
+        if (next == k) return true; // the clouds come closest here, out of reach
+        k = next;
+    }
+}
+
+/// Samples, in `role`, the points of leaf `ls` of s within the reach of leaf `lt` of t that the
+/// role has not sampled yet, up to `cap` samples. Returns false when the query must stop.
+template <class Role_type>
+bool sample_leaf(const Point_cloud_hierarchy& s, Point_cloud_hierarchy::Index ls,
+                        const Point_cloud_hierarchy& t, Point_cloud_hierarchy::Index lt, const Reach_rule& rule_t,
+                        std::size_t cap, std::unordered_set<std::uint32_t>& done, Covering_grid& cover,
+                        Role_type& role)
+{
+    const auto& ns = s.node(ls);
+    const auto& nt = t.node(lt);
+    const Eigen::Matrix4Xd& ps = s.ordered_points();
+    const Eigen::Matrix4Xd& pt = t.ordered_points();
+    for (auto k = ns.first; k < ns.first + ns.count; ++k) {
+        if (role.taken >= cap) return true;
+        const Eigen::Vector3d q = role.s_to_t.transform_point(Eigen::Vector3d(ps.col(k).head<3>()));
+        bool inside = false;
+        for (auto m = nt.first; m < nt.first + nt.count && !inside; ++m) {
+            const double reach = rule_t(pt(3, m));
+            inside = (pt.col(m).head<3>() - q).squaredNorm() <= reach * reach;
+        }
+        if (!inside || !done.insert(s.order()[k]).second) continue;
+        ++role.state.counters.candidate_points;
+        const Eigen::Vector3d local = ps.col(k).head<3>();
+        if (cover.covers(local)) continue;
+        cover.add(local);
+        if (!role.sample(s.order()[k]) || role.state.stop()) return false;
+    }
+    return true;
+}
+
+/// First-hit queries under the depth_first and likelihood traversals: the two hierarchies are
+/// walked together (for_each_leaf_pair_within_reach) and, at each leaf pair, the points of
+/// either leaf within the reach of the other leaf's points are sampled at once in both roles
+/// (each point once per role; per role at most `samples` or max_samples). The walk stops at the
+/// first verified contact, when the budget is spent, or when both roles have their samples.
+template <class Policy, class A, class B>
+void walk_first_hit(const Policy& policy, const Posed_object<A>& a, const Posed_object<B>& b,
+                    const Intersection_options& options, double epsilon, Query_state& state)
+{
+    using Index = Point_cloud_hierarchy::Index;
+    const bool use_a = options.symmetric || a.size() <= b.size();
+    const bool use_b = options.symmetric || a.size() > b.size();
+    // The covering bounds the samples; max_samples (or a fixed count) still caps them.
+    const std::size_t cap = policy.samples ? *policy.samples : policy.max_samples;
+    constexpr double tiny = 1e-300; // a covering radius must be > 0 for the grid
+    const Point_cloud_hierarchy& ha = a.object->hierarchy();
+    const Point_cloud_hierarchy& hb = b.object->hierarchy();
+    const Reach_rule rule_a{.scale = 1.0, .cap = a.support_radius()};
+    const Reach_rule rule_b{.scale = 1.0, .cap = b.support_radius()};
+    with_path_source(policy, a, [&](const auto& source_a) {
+        with_path_source(policy, b, [&](const auto& source_b) {
+            Isearch_role<Policy, A, B, std::remove_cvref_t<decltype(source_a)>> role_a{policy, a, b, source_a, state, epsilon};
+            Isearch_role<Policy, B, A, std::remove_cvref_t<decltype(source_b)>> role_b{policy, b, a, source_b, state, epsilon};
+            std::unordered_set<std::uint32_t> done_a, done_b;
+            Covering_grid cover_a(std::max(policy.walk_cover * role_a.rho, tiny));
+            Covering_grid cover_b(std::max(policy.walk_cover * role_b.rho, tiny));
+            const auto active = [&] { return (use_a && role_a.taken < cap) || (use_b && role_b.taken < cap); };
+            // A deep overlap has contacts all over: a few random points within reach find one
+            // sooner than the walk, which goes to the leaves first.
+            for (std::size_t k = 0; k < policy.probe_draws && !state.stop(); ++k) {
+                if (use_a && !probe(ha, hb, rule_b, cap, done_a, cover_a, role_a, policy.probe_steps)) return;
+                if (use_b && !state.stop() && !probe(hb, ha, rule_a, cap, done_b, cover_b, role_b, policy.probe_steps))
+                    return;
+            }
+            if (state.stop()) return;
+            const Reach_counters c = for_each_leaf_pair_within_reach(
+                ha, hb, role_a.s_to_t, rule_a, rule_b,
+                [&](Index la, Index lb) {
+                    if (state.out_of_budget()) return false;
+                    if (use_a && !sample_leaf(ha, la, hb, lb, rule_b, cap, done_a, cover_a, role_a)) return false;
+                    if (use_b && !sample_leaf(hb, lb, ha, la, rule_a, cap, done_b, cover_b, role_b)) return false;
+                    return active();
+                },
+                options.traversal == Traversal::likelihood, true);
+            state.counters.node_pairs += c.node_pairs;
+            state.counters.leaf_pairs += c.leaf_pairs;
+        });
+    });
+}
+
+} // namespace PCCD::internal
