@@ -1,7 +1,9 @@
 // PCCD/Kinetic/internal/Kinetic_query_view.h -- the kinetic AABB tree as one query reads it
-// (doc/manual/kinetic.md, "Queries": every flightplan is evaluated at most once per query): the
-// tree's nodes and primitives, with vertex positions and node boxes at now computed on first use
-// and memoized in Query_memo tables (Query_memo_pool.h) for the rest of the query. It offers the
+// (doc/manual/kinetic.md, "Queries" and "Where positions come from"): the tree's nodes and
+// primitives, with node boxes read off the extreme vertices' positions at now. When the caller
+// gave the frame's positions (advance_to(t, positions)) a box is six loads from that array and
+// nothing is memoized; otherwise positions are evaluated from the flightplans, each at most once
+// per query, and node boxes memoized, in Query_memo tables (Query_memo_pool.h). It offers the
 // interface the shared queries of AABB_tree_queries.h read.
 #pragma once
 
@@ -31,14 +33,19 @@ public:
     using Box = Eigen::AlignedBox3d;
     using State = Kinetic_tree_state<F, P, Queue>;
 
-    explicit Kinetic_query_view(const State& tree) : m_tree(tree), m_memo(tree.memo_pool.acquire())
+    explicit Kinetic_query_view(const State& tree) : m_tree(tree), m_given(tree.frame_positions)
     {
+        if (m_given) return; // positions are at hand: nothing to evaluate, nothing to memoize
+        m_memo = tree.memo_pool.acquire();
         m_memo->start(tree.flightplans.size(), tree.nodes.size());
         m_stamp = m_memo->stamp;
     }
     Kinetic_query_view(const Kinetic_query_view&) = delete;
     Kinetic_query_view& operator=(const Kinetic_query_view&) = delete;
-    ~Kinetic_query_view() { m_tree.memo_pool.release(std::move(m_memo)); }
+    ~Kinetic_query_view()
+    {
+        if (m_memo) m_tree.memo_pool.release(std::move(m_memo));
+    }
 
     Node_index root() const { return m_tree.root; }
     bool is_leaf(Node_index n) const { return m_tree.nodes[n].is_leaf(); }
@@ -48,6 +55,7 @@ public:
     const P& primitive(Index i) const { return m_tree.primitives[i]; }
     const Eigen::Vector3d& vertex_position(Index v) const
     {
+        if (m_given) return m_given[v];
         Query_memo::Position& entry = m_memo->positions[v];
         if (entry.stamp != m_stamp) {
             entry.value = m_tree.flightplans[v].position(m_tree.now);
@@ -56,8 +64,13 @@ public:
         return entry.value;
     }
     /// Equal to the tree's box(n).
-    const Box& box(Node_index n) const
+    Box box(Node_index n) const
     {
+        if (m_given) {
+            Box result;
+            assemble(n, result);
+            return result;
+        }
         Query_memo::Box& entry = m_memo->boxes[n];
         if (entry.stamp != m_stamp) {
             assemble(n, entry.value);
@@ -84,8 +97,9 @@ private:
     }
 
     const State& m_tree;
+    const Eigen::Vector3d* m_given;
     std::unique_ptr<Query_memo> m_memo;
-    std::uint32_t m_stamp;
+    std::uint32_t m_stamp = 0;
 };
 
 } // namespace PCCD::internal
