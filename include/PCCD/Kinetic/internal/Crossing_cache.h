@@ -24,11 +24,11 @@ namespace PCCD::internal {
 class Crossing_cache {
 public:
     /// Sizes the cache for about `certificates` certificates (a power of two between 2^10 and
-    /// 2^16 entries, about a quarter of the certificates: the hits come from recent evaluations).
+    /// 2^12 entries, 128 KiB, small enough to stay in a core's cache: most hits are for recent evaluations).
     void reset(std::size_t certificates)
     {
         std::size_t size = std::size_t(1) << 10;
-        while (size < certificates / 4 && size < (std::size_t(1) << 16)) size *= 2;
+        while (size < certificates / 4 && size < (std::size_t(1) << 12)) size *= 2;
         m_entries.assign(size, Entry{});
         m_mask = size - 1;
     }
