@@ -7,9 +7,10 @@
 // (kinetic: Kinetic_statistics::node_updates; baselines: every node, as bv_updates).
 //
 //   kinetic_benchmark [--sizes 1684,6891,15503] [--rates 30,60,120] [--repeats 5] [--csv FILE]
-//                     [--rays 64] [--warm-up 0]
+//                     [--rays 64] [--warm-up 0] [--methods kinetic+rays,bottom_up+rays,...]
 //
 // --warm-up S plays the first S seconds untimed and measures the rest (2: the settled cloth).
+// --methods runs only the listed methods (names as in the CSV); default all.
 // Besides the three methods it also runs, at every size and rate, the kinetic tree with a 4-ary
 // event heap (method "kinetic_4ary_heap", for the choice of Event_queue's arity), at the first
 // rate all three methods with the cloth's self-overlap added to the queries ("+self" methods), and
@@ -59,6 +60,7 @@ int main(int argc, char** argv)
     int repeats = 5;
     std::size_t rays = 64;
     double warm_up = 0.0;
+    std::vector<std::string> only;
     std::string csv_file = "kinetic_benchmark.csv";
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string key = argv[i], value = argv[i + 1];
@@ -70,7 +72,10 @@ int main(int argc, char** argv)
             repeats = std::max(1, std::stoi(value));
         else if (key == "--csv")
             csv_file = value;
-        else if (key == "--warm-up")
+        else if (key == "--methods") {
+            std::stringstream in(value);
+            for (std::string item; std::getline(in, item, ',');) only.push_back(item);
+        } else if (key == "--warm-up")
             warm_up = std::stod(value);
         else if (key == "--rays")
             rays = std::size_t(std::stoul(value));
@@ -116,6 +121,7 @@ int main(int argc, char** argv)
                 if (rays > 0) variants.push_back({PCCD::to_string(m) + "+rays+given", m, false, false, true, true});
             }
             for (const Variant& v : variants) {
+                if (!only.empty() && std::find(only.begin(), only.end(), v.name) == only.end()) continue;
                 const PCCD::Kinetic_run_options options{.query_hz = rate,
                                                         .overlap_query = !v.rays,
                                                         .self_overlap_query = v.self,

@@ -15,7 +15,10 @@
 // paths. This header holds the interface; the machinery is in internal/: the tree's data
 // (Kinetic_tree_state.h), one certificate (Kinetic_certificates.h), the event loop
 // (Kinetic_event_loop.h), the changes at run time (Kinetic_tree_edits.h), node boxes
-// (Kinetic_node_access.h) and the view through which queries read the tree (Kinetic_query_view.h).
+// (Kinetic_node_access.h), the view through which queries read the tree (Kinetic_query_view.h)
+// and the cache of certificate failure times (Crossing_cache.h). Node boxes are read off the
+// extreme vertices' positions, evaluated from the flightplans or, after advance_to(t, positions),
+// taken from the caller's array for the frame.
 #pragma once
 
 #include <cstddef>

@@ -65,7 +65,7 @@ struct Kinetic_tree_state {
     std::vector<Index> overtaker;
     Query_memo_pool memo_pool;
     /// The caller's vertex positions at now (advance_to with positions), or null: then positions
-    /// are evaluated from the flightplans (Kinetic_position_source.h).
+    /// are evaluated from the flightplans (doc/manual/kinetic.md, "Where positions come from").
     const Eigen::Vector3d* frame_positions = nullptr;
     /// Failure times already computed, reused while they are still valid (Crossing_cache.h).
     Crossing_cache crossings;
