@@ -1,15 +1,19 @@
 // PCCD/Kinetic/internal/Crossing_cache.h -- a small direct-mapped cache of certificate failure
-// times for the kinetic AABB tree (doc/manual/kinetic.md, "Cost of an event"): about half of the
-// next_crossing evaluations after construction ask again for a pair whose answer is already known,
-// e.g. when a swaying pair of vertices hands a node's extreme back and forth, or when a node is
-// repaired after one child changed and its champion is compared once more with the unchanged
-// candidates.
+// times for the kinetic AABB tree (doc/manual/kinetic.md, "Cost of an event"). On the cloth about
+// half of the next_crossing evaluations after construction ask again for a pair whose answer is
+// already known (counted with an unbounded table), e.g. when a swaying pair of vertices hands a
+// node's extreme back and forth, or when a node is repaired after one child changed and its
+// champion is compared once more with the unchanged candidates; this small table catches most of
+// the recent ones (a quarter to a third of all requests there).
 //
 // Why a reused answer is exact: let r = inf{ s > t0 : x is beaten by y at s } be the failure time
 // computed at t0. For any t with t0 <= t < r, inf{ s > t : x is beaten by y at s } = r as well: no
 // s in (t0, r) belongs to the set, so cutting it at t removes nothing below r. A cached entry
 // (x, y, bound, t0, r) therefore answers every request for the same ordered pair and bound at a
-// time t in [t0, r), bit for bit; outside that window it is recomputed. The cache must be cleared
+// time t in [t0, r); outside that window it is recomputed. (For Piecewise_linear_flightplan a
+// fresh computation at t gives r bit for bit, as the scan depends on t only through where it
+// starts; the tests check every scheduled certificate against one. For the cubic pieces' root
+// isolation a fresh value may differ from r by rounding; r is the one the set's definition gives.) The cache must be cleared
 // when a flightplan changes (the tree does so in set_flightplan).
 #pragma once
 
