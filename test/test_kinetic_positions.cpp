@@ -169,7 +169,9 @@ TEST_CASE("given positions: bad arrays are rejected, the mode ends with the posi
     CHECK(tree.has_frame_positions());
     tree.advance_to(0.3); // a plain advance evaluates flightplans again
     CHECK_FALSE(tree.has_frame_positions());
-    tree.advance_to(0.35, positions_at(scene.flightplans, 0.35));
+    const auto at_035 = positions_at(scene.flightplans, 0.35); // must outlive its use by the tree
+    tree.advance_to(0.35, at_035);
+    CHECK(tree.has_frame_positions());
     // Replacing a flightplan (here with a jump) or adding a vertex ends the given positions: the
     // array no longer describes the vertices.
     const auto times = scene.flightplans[3].key_times();
@@ -181,8 +183,18 @@ TEST_CASE("given positions: bad arrays are rejected, the mode ends with the posi
     std::vector<Eigen::Vector3d> now;
     for (std::uint32_t v = 0; v < tree.vertex_count(); ++v) now.push_back(tree.flightplan(v).position(0.35));
     check_boxes(tree, now);
-    tree.advance_to(0.4, positions_at(scene.flightplans, 0.4));
     CHECK_FALSE(tree.positions_match(0.4, positions_at(scene.flightplans, 0.4))); // vertex 3 moved
+    std::vector<Eigen::Vector3d> at_04;
+    for (std::uint32_t v = 0; v < tree.vertex_count(); ++v) at_04.push_back(tree.flightplan(v).position(0.4));
+    CHECK(tree.positions_match(0.4, at_04));
+    tree.advance_to(0.4, at_04);
+    check_boxes(tree, at_04);
+#ifndef NDEBUG
+    // Debug builds check the precondition: these positions miss vertex 3's new flightplan.
+    CHECK_THROWS_AS(tree.advance_to(0.45, positions_at(scene.flightplans, 0.45)), PCCD::Precondition_failure);
+    CHECK_FALSE(tree.has_frame_positions());
+    tree.advance_to(0.4, at_04);
+#endif
     tree.add_vertex(Plan());
     CHECK_FALSE(tree.has_frame_positions());
 }
