@@ -98,7 +98,8 @@ public:
     /// Moves the tree to time t taking the vertex positions from `positions` (copied; one per
     /// vertex, e.g. the simulation's state at t) instead of evaluating the flightplans, then refits
     /// or rebuilds as advance_to(t). The same input as Kinetic_AABB_tree::advance_to(t, positions),
-    /// for a like-for-like comparison. \pre positions[v] == flightplan(v).position(t).
+    /// for a like-for-like comparison. The boxes are those of the given positions; vertex_position()
+    /// returns them. Give the flightplans' positions at t to compare with the kinetic tree.
     /// \throws Invalid_input if t is not finite or positions.size() != vertex_count().
     void advance_to(double t, std::span<const Eigen::Vector3d> positions)
     {
