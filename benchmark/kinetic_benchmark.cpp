@@ -7,14 +7,19 @@
 // (kinetic: Kinetic_statistics::node_updates; baselines: every node, as bv_updates).
 //
 //   kinetic_benchmark [--sizes 1684,6891,15503] [--rates 30,60,120] [--repeats 5] [--csv FILE]
-//                     [--rays 64]
+//                     [--rays 64] [--warm-up 0] [--methods kinetic+rays,bottom_up+rays,...]
 //
+// --warm-up S plays the first S seconds untimed and measures the rest (2: the settled cloth).
+// --methods runs only the listed methods (names as in the CSV); default all.
 // Besides the three methods it also runs, at every size and rate, the kinetic tree with a 4-ary
 // event heap (method "kinetic_4ary_heap", for the choice of Event_queue's arity), at the first
 // rate all three methods with the cloth's self-overlap added to the queries ("+self" methods), and
 // at every rate all three methods answering only ray casts instead of the table overlap ("+rays"
 // methods: no overlap query, --rays first-hit rays per frame, the same fixed rays for every method
-// and frame; see Kinetic_run_options::rays_per_frame). The overlap of the cloth lying on the table
+// and frame; see Kinetic_run_options::rays_per_frame), and the kinetic tree and bottom-up refit
+// with the frame's vertex positions handed to them ("+given" methods, overlap and rays: the
+// positions a simulation already holds, computed outside the timed part;
+// Kinetic_run_options::given_positions). The overlap of the cloth lying on the table
 // visits nearly the whole tree, the kinetic tree's worst case (it assembles node boxes lazily at
 // query time); a ray touches only the nodes along its path. For "+rays" rows, queries counts rays
 // (rays per frame x frames); --rays 0 leaves these rows out.
@@ -54,6 +59,8 @@ int main(int argc, char** argv)
     std::vector<double> sizes{1684, 6891, 15503}, rates{30, 60, 120};
     int repeats = 5;
     std::size_t rays = 64;
+    double warm_up = 0.0;
+    std::vector<std::string> only;
     std::string csv_file = "kinetic_benchmark.csv";
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string key = argv[i], value = argv[i + 1];
@@ -65,6 +72,11 @@ int main(int argc, char** argv)
             repeats = std::max(1, std::stoi(value));
         else if (key == "--csv")
             csv_file = value;
+        else if (key == "--methods") {
+            std::stringstream in(value);
+            for (std::string item; std::getline(in, item, ',');) only.push_back(item);
+        } else if (key == "--warm-up")
+            warm_up = std::stod(value);
         else if (key == "--rays")
             rays = std::size_t(std::stoul(value));
         else {
@@ -75,7 +87,8 @@ int main(int argc, char** argv)
     std::ofstream csv(csv_file);
     csv << "scene,triangles,nodes,duration_s,query_hz,frames,queries,method,bv_updates,events,"
            "certificate_computations,build_ms,update_ms_median,query_ms_median,ms_per_frame_median,ms_per_frame_min,"
-           "ms_per_frame_max,repeats,node_updates,cpu_update_ms_median,cpu_query_ms_median,cpu_ms_per_frame_median\n";
+           "ms_per_frame_max,repeats,node_updates,cpu_update_ms_median,cpu_query_ms_median,cpu_ms_per_frame_median,"
+           "certificate_reuses\n";
     std::cout << std::fixed << std::setprecision(3);
     for (const double size : sizes) {
         const auto sim_start = std::chrono::steady_clock::now();
@@ -89,6 +102,7 @@ int main(int argc, char** argv)
             bool four_ary_heap;
             bool self;
             bool rays;
+            bool given = false;
         };
         for (const double rate : rates) {
             std::vector<Variant> variants{{"kinetic", PCCD::Kinetic_method::kinetic, false, false, false},
@@ -101,11 +115,19 @@ int main(int argc, char** argv)
                 for (const auto m : methods) variants.push_back({PCCD::to_string(m) + "+self", m, false, true, false});
             if (rays > 0)
                 for (const auto m : methods) variants.push_back({PCCD::to_string(m) + "+rays", m, false, false, true});
+            // The frame's positions handed to the trees (advance_to(t, positions)), overlap and rays.
+            for (const auto m : {PCCD::Kinetic_method::kinetic, PCCD::Kinetic_method::bottom_up}) {
+                variants.push_back({PCCD::to_string(m) + "+given", m, false, false, false, true});
+                if (rays > 0) variants.push_back({PCCD::to_string(m) + "+rays+given", m, false, false, true, true});
+            }
             for (const Variant& v : variants) {
+                if (!only.empty() && std::find(only.begin(), only.end(), v.name) == only.end()) continue;
                 const PCCD::Kinetic_run_options options{.query_hz = rate,
                                                         .overlap_query = !v.rays,
                                                         .self_overlap_query = v.self,
-                                                        .rays_per_frame = v.rays ? rays : 0};
+                                                        .rays_per_frame = v.rays ? rays : 0,
+                                                        .given_positions = v.given,
+                                                        .warm_up = warm_up};
                 std::vector<double> times, updates, queries, cpu_times, cpu_updates, cpu_queries;
                 PCCD::Kinetic_run_result first;
                 for (int r = 0; r < repeats; ++r) {
@@ -129,7 +151,8 @@ int main(int argc, char** argv)
                     << ',' << *std::min_element(times.begin(), times.end()) << ','
                     << *std::max_element(times.begin(), times.end()) << ',' << repeats << ','
                     << (v.method == PCCD::Kinetic_method::kinetic ? first.node_updates : first.bv_updates) << ','
-                    << median(cpu_updates) << ',' << median(cpu_queries) << ',' << median(cpu_times) << '\n';
+                    << median(cpu_updates) << ',' << median(cpu_queries) << ',' << median(cpu_times) << ','
+                    << first.certificate_reuses << '\n';
                 std::cout << "  " << std::setw(5) << rate << " Hz " << std::setw(22) << v.name << "  bv_updates "
                           << std::setw(9) << first.bv_updates << "  node_updates " << std::setw(9)
                           << (v.method == PCCD::Kinetic_method::kinetic ? first.node_updates : first.bv_updates)

@@ -4,7 +4,8 @@
 // use which"; the scenes are benchmark/scenes/, target pccd_kinetic_scenes).
 // The queries per frame: the overlap with the scene's obstacle (the table; a range query for the
 // point scenes) unless --no-overlap, plus --rays N first-hit ray casts (cloth only; fixed rays, the
-// same for every method, see PCCD::Kinetic_run_options::rays_per_frame).
+// same for every method, see PCCD::Kinetic_run_options::rays_per_frame). --given-positions hands
+// the frame's positions to the trees; --warm-up S measures from S seconds into the animation.
 #include "commands.h"
 
 #include <PCCD/Error.h>
@@ -33,6 +34,8 @@ struct Kinetic_bench_args {
     double query_hz = 30.0;
     std::size_t rays = 0;
     bool no_overlap = false;
+    bool given_positions = false;
+    double warm_up = 0.0;
     bool json = false;
 };
 
@@ -40,7 +43,11 @@ template <class P>
 void run_and_print(const PCCD::Kinetic_scene<P>& scene, const Kinetic_bench_args& args)
 {
     const PCCD::Kinetic_run_options options{
-        .query_hz = args.query_hz, .overlap_query = !args.no_overlap, .rays_per_frame = args.rays};
+        .query_hz = args.query_hz,
+        .overlap_query = !args.no_overlap,
+        .rays_per_frame = args.rays,
+        .given_positions = args.given_positions,
+        .warm_up = args.warm_up};
     nlohmann::json out;
     out["scene"] = scene.name;
     out["primitives"] = scene.primitives.size();
@@ -48,6 +55,8 @@ void run_and_print(const PCCD::Kinetic_scene<P>& scene, const Kinetic_bench_args
     out["duration_s"] = scene.end_time - scene.start_time;
     out["query_hz"] = args.query_hz;
     out["rays_per_frame"] = args.rays;
+    out["given_positions"] = args.given_positions;
+    out["warm_up_s"] = args.warm_up;
     for (const auto method : {PCCD::Kinetic_method::kinetic, PCCD::Kinetic_method::bottom_up,
                               PCCD::Kinetic_method::rebuild}) {
         const auto r = PCCD::run_kinetic_scene(scene, method, options);
@@ -65,6 +74,7 @@ void run_and_print(const PCCD::Kinetic_scene<P>& scene, const Kinetic_bench_args
             out["events"] = r.events;
             out["node_updates"] = r.node_updates;
             out["certificate_computations"] = r.certificate_computations;
+            out["certificate_reuses"] = r.certificate_reuses;
         }
     }
     if (args.json) {
@@ -102,12 +112,18 @@ void register_kinetic_bench(CLI::App& app)
     cmd->add_option("--size", args->size, "cloth: triangles; bunny and random: points")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
-    cmd->add_option("--frames", args->frames, "query frames to play (animation length = frames / query-hz); "
+    cmd->add_option("--frames", args->frames, "query frames to play (animation length = warm-up + frames / query-hz); "
                                               "default: the scene's own length");
     cmd->add_option("--query-hz", args->query_hz, "query frames per second of animation time")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
     cmd->add_option("--rays", args->rays, "add N first-hit ray casts per frame to the queries (cloth only)")
+        ->capture_default_str();
+    cmd->add_flag("--given-positions", args->given_positions,
+                  "hand the frame's vertex positions to the trees (as a simulation holds them) instead of "
+                  "evaluating flightplans");
+    cmd->add_option("--warm-up", args->warm_up, "seconds of animation played untimed before the measured frames")
+        ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
     cmd->add_flag("--no-overlap", args->no_overlap, "skip the overlap query (the table; range query for points)");
     cmd->add_flag("--json", args->json, "print JSON");
@@ -117,7 +133,7 @@ void register_kinetic_bench(CLI::App& app)
                                       " needs a scene of triangles (--scene cloth); scene " + args->scene +
                                       " has points, which rays cannot hit");
         const bool custom_length = args->frames > 0;
-        const double duration = custom_length ? double(args->frames) / args->query_hz : 0.0;
+        const double duration = custom_length ? args->warm_up + double(args->frames) / args->query_hz : 0.0;
         if (args->scene == "cloth") {
             PCCD::Cloth_scene_options o{.triangles = args->size};
             if (custom_length) o.duration = duration;

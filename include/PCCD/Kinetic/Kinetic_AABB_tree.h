@@ -15,7 +15,10 @@
 // paths. This header holds the interface; the machinery is in internal/: the tree's data
 // (Kinetic_tree_state.h), one certificate (Kinetic_certificates.h), the event loop
 // (Kinetic_event_loop.h), the changes at run time (Kinetic_tree_edits.h), node boxes
-// (Kinetic_node_access.h) and the view through which queries read the tree (Kinetic_query_view.h).
+// (Kinetic_node_access.h), the view through which queries read the tree (Kinetic_query_view.h)
+// and the cache of certificate failure times (Crossing_cache.h). Node boxes are read off the
+// extreme vertices' positions, evaluated from the flightplans or, after advance_to(t, positions),
+// taken from the caller's array for the frame.
 #pragma once
 
 #include <cstddef>
@@ -116,6 +119,7 @@ public:
             if (s.nodes[n].is_leaf()) s.leaf_of[s.nodes[n].primitive] = n;
         s.queue.resize(s.nodes.size() * bound_count);
         s.overtaker.assign(s.nodes.size() * bound_count, no_node);
+        s.crossings.reset(s.nodes.size() * bound_count);
         s.updated_in_round.assign(s.nodes.size(), 0);
         internal::initialize_at(s, t0);
     }
@@ -137,11 +141,45 @@ public:
     void advance_to(double t)
     {
         internal::check_advance_time(tree_name, t);
+        m_state.frame_positions = nullptr;
         if (t < m_state.now)
             internal::initialize_at(m_state, t);
         else
             internal::process_events_before(m_state, t);
     }
+
+    /// Moves the tree to time t as advance_to(t), then takes the vertex positions at t from
+    /// `positions` (one per vertex, e.g. the state of the simulation that recorded the flightplans)
+    /// instead of evaluating flightplans: box(), vertex_position() and every query read them until
+    /// the next advance_to, set_flightplan or add_vertex. The array is not copied; it must stay
+    /// alive and unchanged until then.
+    /// \pre positions[v] == flightplan(v).position(t) for every v, bit for bit (the extremes are
+    ///      those of the flightplans; a box read off other positions need not contain them).
+    ///      Checked in debug builds; positions_match(t, positions) checks it on demand.
+    /// \throws Invalid_input if t is not finite or positions.size() != vertex_count().
+    /// Complexity: that of advance_to(t); no flightplan evaluation at query time.
+    void advance_to(double t, std::span<const Eigen::Vector3d> positions)
+    {
+        if (positions.size() != m_state.flightplans.size())
+            throw Invalid_input(internal::concat(tree_name, "::advance_to: ", positions.size(),
+                                                 " positions given for ", m_state.flightplans.size(), " vertices"));
+        advance_to(t);
+        PCCD_debug_precondition(positions_match(t, positions));
+        m_state.frame_positions = positions.data();
+    }
+
+    /// Whether `positions` holds every vertex's flightplan position at t, bit for bit (the
+    /// precondition of advance_to(t, positions)). O(vertex_count()) flightplan evaluations.
+    bool positions_match(double t, std::span<const Eigen::Vector3d> positions) const
+    {
+        if (positions.size() != m_state.flightplans.size()) return false;
+        for (std::size_t v = 0; v < positions.size(); ++v)
+            if (m_state.flightplans[v].position(t) != positions[v]) return false;
+        return true;
+    }
+
+    /// Whether the tree currently reads the caller's positions (advance_to with positions).
+    bool has_frame_positions() const { return m_state.frame_positions != nullptr; }
 
     /// The time of the next pending event (+infinity if none).
     double next_event_time() const { return m_state.queue.empty() ? never : m_state.queue.top_time(); }
@@ -162,6 +200,8 @@ public:
     {
         internal::check_vertex(tree_name, v, m_state.flightplans.size());
         m_state.flightplans[v] = std::move(flightplan);
+        m_state.crossings.clear();            // cached failure times of v's pairs no longer hold
+        m_state.frame_positions = nullptr;    // the caller's positions no longer describe v
         ++m_state.stats.flightplan_changes;
         internal::repair_after_flightplan_change(m_state, v);
     }
@@ -173,6 +213,7 @@ public:
             throw Invalid_input("Kinetic_AABB_tree::add_vertex: too many vertices");
         m_state.flightplans.push_back(std::move(flightplan));
         m_state.incident.emplace_back();
+        m_state.frame_positions = nullptr; // the caller's array has no entry for the new vertex
         return Index(m_state.flightplans.size() - 1);
     }
 
@@ -210,7 +251,7 @@ public:
     const P& primitive(Index i) const { return m_state.primitives[i]; }
     const F& flightplan(Index v) const { return m_state.flightplans[v]; }
     /// Position of vertex v at now().
-    Eigen::Vector3d vertex_position(Index v) const { return m_state.flightplans[v].position(m_state.now); }
+    Eigen::Vector3d vertex_position(Index v) const { return internal::vertex_position(m_state, v); }
     const Statistics& statistics() const { return m_state.stats; }
     void reset_statistics() { m_state.stats = Statistics(); }
     /// @}

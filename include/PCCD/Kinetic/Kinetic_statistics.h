@@ -16,6 +16,9 @@ struct Kinetic_statistics {
     /// counterpart of a refit's "node boxes recomputed per frame", so it depends on the query rate.
     std::uint64_t node_updates = 0;
     std::uint64_t certificate_computations = 0; ///< next_crossing evaluations (the real work)
+    /// Failure times taken from the cache of earlier evaluations instead of computing them again
+    /// (same pair, bound and still-valid time window; exact, see internal/Crossing_cache.h).
+    std::uint64_t certificate_reuses = 0;
     std::uint64_t flightplan_changes = 0;
     std::uint64_t insertions = 0;
     std::uint64_t removals = 0;

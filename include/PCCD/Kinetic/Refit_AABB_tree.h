@@ -95,6 +95,24 @@ public:
         if (m_options.update == Refit_update::rebuild) rebuild_topology();
         refit();
     }
+    /// Moves the tree to time t taking the vertex positions from `positions` (copied; one per
+    /// vertex, e.g. the simulation's state at t) instead of evaluating the flightplans, then refits
+    /// or rebuilds as advance_to(t). The same input as Kinetic_AABB_tree::advance_to(t, positions),
+    /// for a like-for-like comparison. The boxes are those of the given positions; vertex_position()
+    /// returns them. Give the flightplans' positions at t to compare with the kinetic tree.
+    /// \throws Invalid_input if t is not finite or positions.size() != vertex_count().
+    void advance_to(double t, std::span<const Eigen::Vector3d> positions)
+    {
+        internal::check_advance_time(tree_name, t);
+        if (positions.size() != m_flightplans.size())
+            throw Invalid_input(internal::concat(tree_name, "::advance_to: ", positions.size(),
+                                                 " positions given for ", m_flightplans.size(), " vertices"));
+        m_now = t;
+        ++m_stats.frames;
+        m_positions.assign(positions.begin(), positions.end());
+        if (m_options.update == Refit_update::rebuild) rebuild_topology();
+        refit();
+    }
     /// @}
 
     /// \name Changes at run time (at now())

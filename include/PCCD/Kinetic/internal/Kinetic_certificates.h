@@ -21,10 +21,17 @@ template <class F, class P, class Queue>
 double certificate_failure(Kinetic_tree_state<F, P, Queue>& s, std::uint32_t x, std::uint32_t y, int b)
 {
     if (x == y) return s.never;
+    double result;
+    if (s.crossings.find(x, y, b, s.now, result)) {
+        ++s.stats.certificate_reuses;
+        return result;
+    }
     ++s.stats.certificate_computations;
     const int axis = b % 3;
-    return b >= 3 ? s.flightplans[x].next_crossing(s.flightplans[y], axis, s.now)
-                  : s.flightplans[y].next_crossing(s.flightplans[x], axis, s.now);
+    result = b >= 3 ? s.flightplans[x].next_crossing(s.flightplans[y], axis, s.now)
+                    : s.flightplans[y].next_crossing(s.flightplans[x], axis, s.now);
+    s.crossings.store(x, y, b, s.now, result);
+    return result;
 }
 
 /// Whether vertex v is a candidate for bound b of a node whose child is `child`: v is the

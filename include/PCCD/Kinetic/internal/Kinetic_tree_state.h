@@ -13,8 +13,11 @@
 #include <utility>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include <PCCD/Kinetic/Kinetic_statistics.h>
 #include <PCCD/Kinetic/internal/AABB_tree_build.h>
+#include <PCCD/Kinetic/internal/Crossing_cache.h>
 #include <PCCD/Kinetic/internal/Primitive_slots.h>
 #include <PCCD/Kinetic/internal/Query_memo_pool.h>
 
@@ -61,6 +64,11 @@ struct Kinetic_tree_state {
     /// Per certificate, the candidate that attains its failure time (the next extreme at the event).
     std::vector<Index> overtaker;
     Query_memo_pool memo_pool;
+    /// The caller's vertex positions at now (advance_to with positions), or null: then positions
+    /// are evaluated from the flightplans (doc/manual/kinetic.md, "Where positions come from").
+    const Eigen::Vector3d* frame_positions = nullptr;
+    /// Failure times already computed, reused while they are still valid (Crossing_cache.h).
+    Crossing_cache crossings;
     /// Per node, the last update round (advance_to call or run-time change) that changed it.
     std::vector<std::uint32_t> updated_in_round;
     std::uint32_t round = 1;
