@@ -202,6 +202,31 @@ Reach_counters for_each_leaf_pair_within_reach(const Point_cloud_hierarchy& s, c
     return counters;
 }
 
+namespace internal {
+
+/// Calls `body(squared distance, reach_p + reach_q)` for the point pairs of leaf `leaf_s` of s
+/// (mapped by s_to_t) and leaf `leaf_t` of t, until it returns false. Returns false if it stopped.
+template <class Body>
+bool for_each_leaf_point_pair(const Point_cloud_hierarchy& s, Point_cloud_hierarchy::Index leaf_s,
+                              const Point_cloud_hierarchy& t, Point_cloud_hierarchy::Index leaf_t,
+                              const Rigid_transform_3<double>& s_to_t, const Reach_rule& rule_s, const Reach_rule& rule_t,
+                              Body&& body)
+{
+    const auto& ns = s.node(leaf_s);
+    const auto& nt = t.node(leaf_t);
+    const Eigen::Matrix4Xd& ps = s.ordered_points();
+    const Eigen::Matrix4Xd& pt = t.ordered_points();
+    for (auto a = ns.first; a < ns.first + ns.count; ++a) {
+        const Eigen::Vector3d p = s_to_t.transform_point(Eigen::Vector3d(ps.col(a).head<3>()));
+        const double ra = rule_s(ps(3, a));
+        for (auto b = nt.first; b < nt.first + nt.count; ++b)
+            if (!body((pt.col(b).head<3>() - p).squaredNorm(), ra + rule_t(pt(3, b)))) return false;
+    }
+    return true;
+}
+
+} // namespace internal
+
 /// The smallest value of |T p - q| - rule_s(reach_p) - rule_t(reach_q) over the points p of leaf
 /// `leaf_s` of s and q of leaf `leaf_t` of t (T = s_to_t): <= 0 exactly when some pair of their
 /// points lies within the sum of its reaches. O(|leaf_s| |leaf_t|).
@@ -209,17 +234,11 @@ inline double leaf_pair_gap(const Point_cloud_hierarchy& s, Point_cloud_hierarch
                             const Point_cloud_hierarchy& t, Point_cloud_hierarchy::Index leaf_t,
                             const Rigid_transform_3<double>& s_to_t, const Reach_rule& rule_s, const Reach_rule& rule_t)
 {
-    const auto& ns = s.node(leaf_s);
-    const auto& nt = t.node(leaf_t);
-    const Eigen::Matrix4Xd& ps = s.ordered_points();
-    const Eigen::Matrix4Xd& pt = t.ordered_points();
     double gap = std::numeric_limits<double>::infinity();
-    for (auto a = ns.first; a < ns.first + ns.count; ++a) {
-        const Eigen::Vector3d p = s_to_t.transform_point(Eigen::Vector3d(ps.col(a).head<3>()));
-        const double ra = rule_s(ps(3, a));
-        for (auto b = nt.first; b < nt.first + nt.count; ++b)
-            gap = std::min(gap, (pt.col(b).head<3>() - p).norm() - ra - rule_t(pt(3, b)));
-    }
+    internal::for_each_leaf_point_pair(s, leaf_s, t, leaf_t, s_to_t, rule_s, rule_t, [&](double squared, double reach) {
+        gap = std::min(gap, std::sqrt(squared) - reach);
+        return true;
+    });
     return gap;
 }
 
@@ -229,19 +248,8 @@ inline bool leaf_reaches_meet(const Point_cloud_hierarchy& s, Point_cloud_hierar
                               const Point_cloud_hierarchy& t, Point_cloud_hierarchy::Index leaf_t,
                               const Rigid_transform_3<double>& s_to_t, const Reach_rule& rule_s, const Reach_rule& rule_t)
 {
-    const auto& ns = s.node(leaf_s);
-    const auto& nt = t.node(leaf_t);
-    const Eigen::Matrix4Xd& ps = s.ordered_points();
-    const Eigen::Matrix4Xd& pt = t.ordered_points();
-    for (auto a = ns.first; a < ns.first + ns.count; ++a) {
-        const Eigen::Vector3d p = s_to_t.transform_point(Eigen::Vector3d(ps.col(a).head<3>()));
-        const double ra = rule_s(ps(3, a));
-        for (auto b = nt.first; b < nt.first + nt.count; ++b) {
-            const double reach = ra + rule_t(pt(3, b));
-            if ((pt.col(b).head<3>() - p).squaredNorm() <= reach * reach) return true;
-        }
-    }
-    return false;
+    return !internal::for_each_leaf_point_pair(s, leaf_s, t, leaf_t, s_to_t, rule_s, rule_t,
+                                               [](double squared, double reach) { return squared > reach * reach; });
 }
 
 /// Whether s and t (s mapped by `s_to_t`) have a pair of points p, q with |T p - q| <= rule_s(reach_p)

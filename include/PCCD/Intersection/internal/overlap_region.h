@@ -115,6 +115,34 @@ std::vector<std::uint32_t> region_points(const Point_cloud_hierarchy& s, const P
     return points;
 }
 
+/// A uniformly random permutation of [0, n), drawn one element at a time without materializing it
+/// (sparse Fisher-Yates: only the displaced entries are stored). O(1) expected per draw.
+class Sparse_permutation {
+public:
+    explicit Sparse_permutation(std::size_t n) : m_size(n) {}
+
+    /// The next element. \pre fewer than n drawn
+    std::uint32_t next(Random_engine& engine)
+    {
+        const std::size_t pick = m_drawn + std::size_t(uniform_index(engine, m_size - m_drawn));
+        const std::uint32_t chosen = value_at(pick);
+        m_swapped[std::uint32_t(pick)] = value_at(m_drawn);
+        ++m_drawn;
+        return chosen;
+    }
+
+private:
+    std::uint32_t value_at(std::size_t k) const
+    {
+        const auto it = m_swapped.find(std::uint32_t(k));
+        return it == m_swapped.end() ? std::uint32_t(k) : it->second;
+    }
+
+    std::size_t m_size;
+    std::size_t m_drawn = 0;
+    std::unordered_map<std::uint32_t, std::uint32_t> m_swapped;
+};
+
 /// Draws the points of s in the region (points whose position, mapped into t's frame, lies in a
 /// leaf box of t grown by `margin`) one at a time, uniformly at random without replacement.
 ///
@@ -130,7 +158,7 @@ public:
     Region_sampler(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t, const Rigid_transform_3<double>& s_to_t,
                    double margin, Overlap_region region, const Position& position, Intersection_counters& counters)
         : m_s(&s), m_t(&t), m_s_to_t(s_to_t), m_margin(margin), m_region(region), m_position(position),
-          m_counters(&counters), m_size(s.size())
+          m_counters(&counters), m_size(s.size()), m_permutation(s.size())
     {
         // A pair of disjoint objects needs no draws at all.
         m_empty = !boxes_may_overlap(s.root().box, s_to_t, t.root().box, margin);
@@ -179,14 +207,7 @@ public:
 private:
     std::uint32_t draw_from_all(Random_engine& engine)
     {
-        // Sparse Fisher-Yates over [0, size): m_swapped holds the displaced entries.
-        const std::size_t pick = m_drawn + std::size_t(uniform_index(engine, m_size - m_drawn));
-        const auto value_at = [&](std::size_t k) {
-            const auto it = m_swapped.find(std::uint32_t(k));
-            return it == m_swapped.end() ? std::uint32_t(k) : it->second;
-        };
-        const std::uint32_t chosen = value_at(pick);
-        m_swapped[std::uint32_t(pick)] = value_at(m_drawn);
+        const std::uint32_t chosen = m_permutation.next(engine);
         m_drawn_points.push_back(chosen);
         ++m_drawn;
         return chosen;
@@ -214,7 +235,7 @@ private:
     bool m_empty = false;
     bool m_enumerated = false;
     std::size_t m_drawn = 0, m_accepted = 0, m_next = 0;
-    std::unordered_map<std::uint32_t, std::uint32_t> m_swapped;
+    Sparse_permutation m_permutation;
     std::vector<std::uint32_t> m_drawn_points;
     std::vector<std::uint32_t> m_list;
 };

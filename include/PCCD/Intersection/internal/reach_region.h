@@ -16,6 +16,7 @@
 #include <PCCD/Hierarchy/Point_cloud_hierarchy.h>
 #include <PCCD/Hierarchy/reach_traversal.h>
 #include <PCCD/Intersection/Intersection_result.h>
+#include <PCCD/Intersection/internal/overlap_region.h>
 #include <PCCD/Random.h>
 #include <PCCD/Rigid_transform_3.h>
 
@@ -37,7 +38,8 @@ public:
     Reach_region_sampler(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t,
                          const Rigid_transform_3<double>& s_to_t, const Reach_rule& rule_t,
                          Intersection_counters& counters)
-        : m_s(&s), m_t(&t), m_s_to_t(s_to_t), m_rule(rule_t), m_counters(&counters), m_size(s.size())
+        : m_s(&s), m_t(&t), m_s_to_t(s_to_t), m_rule(rule_t), m_counters(&counters), m_size(s.size()),
+          m_permutation(s.size())
     {
         Reach_counters c;
         m_enumerated = points_within_reach(s, t, s_to_t, rule_t, m_list, c, eager_leaf_pairs);
@@ -90,16 +92,10 @@ private:
         m_counters->leaf_pairs += c.leaf_pairs;
     }
 
-    /// A position in s's hierarchy order, uniformly among those not drawn yet (sparse Fisher-Yates).
+    /// A position in s's hierarchy order, uniformly among those not drawn yet.
     std::uint32_t draw_from_all(Random_engine& engine)
     {
-        const std::size_t pick = m_drawn + std::size_t(uniform_index(engine, m_size - m_drawn));
-        const auto value_at = [&](std::size_t k) {
-            const auto it = m_swapped.find(std::uint32_t(k));
-            return it == m_swapped.end() ? std::uint32_t(k) : it->second;
-        };
-        const std::uint32_t chosen = value_at(pick);
-        m_swapped[std::uint32_t(pick)] = value_at(m_drawn);
+        const std::uint32_t chosen = m_permutation.next(engine);
         m_drawn_points.push_back(m_s->order()[chosen]);
         ++m_drawn;
         return chosen;
@@ -126,7 +122,7 @@ private:
     std::size_t m_size;
     bool m_enumerated = false;
     std::size_t m_drawn = 0, m_accepted = 0, m_next = 0;
-    std::unordered_map<std::uint32_t, std::uint32_t> m_swapped;
+    Sparse_permutation m_permutation;
     std::vector<std::uint32_t> m_drawn_points;
     std::vector<std::uint32_t> m_list;
 };
