@@ -6,6 +6,7 @@
 //   hierarchy_benchmark [--models bunny00.off,elephant.off,eight.off] [--points 30000]
 //                       [--rotations 50] [--repetitions 3] [--seed 1]
 //                       [--traversals flat,depth_first,likelihood] [--csv OUT]
+//                       [--budgets 5,10,20,50,100 --budget-csv OUT]
 //
 // Peak memory (getrusage) is printed after each model's preprocessing. Per model: the mesh is normalized into [-1, 1]^3, FCL's OBBRSS hierarchy is built on it, and a
 // cloud of --points points is sampled by area and preprocessed with default options. Per pose:
@@ -49,6 +50,8 @@ struct Arguments {
     std::uint64_t seed = 1;
     std::vector<std::string> traversals{"flat", "depth_first", "likelihood"};
     std::string csv;
+    std::vector<double> budgets; // time budgets in us for the budget sweep (empty: none)
+    std::string budget_csv;
 };
 
 std::vector<std::string> split(const std::string& text)
@@ -72,8 +75,11 @@ Arguments parse(int argc, char** argv)
         else if (key == "--rotations") a.rotations = std::stoul(value);
         else if (key == "--repetitions") a.repetitions = std::stoi(value);
         else if (key == "--seed") a.seed = std::stoull(value);
-        else if (key == "--traversals") a.traversals = split(value);
+        else if (key == "--traversals") a.traversals = value == "none" ? std::vector<std::string>{} : split(value);
         else if (key == "--csv") a.csv = value;
+        else if (key == "--budgets") {
+            for (const auto& item : split(value)) a.budgets.push_back(std::stod(item));
+        } else if (key == "--budget-csv") a.budget_csv = value;
         else throw std::invalid_argument("unknown option " + key);
     }
     if (a.repetitions < 1 || a.rotations == 0 || a.points < 100)
@@ -123,7 +129,56 @@ double p99(std::vector<double> v)
     return pccd_bench::sorted_quantile(v, 99);
 }
 
-void run_model(const std::string& name, const Arguments& args, std::ofstream* csv)
+/// The budget sweep: per budget and distance, counts of poses, undecided and wrong answers.
+void run_budgets(const std::string& name, const PCCD::Point_cloud_object<>& object,
+                 const PCCD::benchmark::Fcl_mesh_baseline& fcl, const std::vector<PCCD::Benchmark_pose>& poses,
+                 const Arguments& args, std::ofstream* csv)
+{
+    struct Tally {
+        std::size_t poses = 0, undecided = 0, wrong = 0;
+    };
+    std::map<double, std::map<double, Tally>> tallies; // budget -> distance -> tally
+    for (const auto& pose : poses) {
+        const bool truth = fcl.collide(pose.pose_a, pose.pose_b);
+        // One untimed run first: a query in a simulation loop finds its data in the caches.
+        PCCD::do_intersect(object, pose.pose_a, object, pose.pose_b, {.seed = args.seed});
+        for (const double budget : args.budgets) {
+            PCCD::Intersection_options options{.seed = args.seed};
+            options.max_time_us = budget;
+            const auto result = PCCD::do_intersect(object, pose.pose_a, object, pose.pose_b, options);
+            Tally& t = tallies[budget][pose.distance];
+            ++t.poses;
+            if (result.status == PCCD::Intersection_status::undecided)
+                ++t.undecided;
+            else if (result.intersects != truth)
+                ++t.wrong;
+        }
+    }
+    std::printf("budget sweep (%s): undecided / wrong against FCL, per budget\n%-10s %11s %9s\n", name.c_str(),
+                "budget_us", "undecided", "wrong");
+    for (const auto& [budget, by_distance] : tallies) {
+        Tally all;
+        for (const auto& [d, t] : by_distance) {
+            all.poses += t.poses;
+            all.undecided += t.undecided;
+            all.wrong += t.wrong;
+            if (csv)
+                *csv << name << ',' << budget << ',' << d << ',' << t.poses << ',' << t.undecided << ',' << t.wrong << '\n';
+        }
+        std::printf("%-10.1f %10.2f%% %8.2f%%\n", budget, 100.0 * double(all.undecided) / double(all.poses),
+                    100.0 * double(all.wrong) / double(all.poses));
+        // Distance -1: all distances together (the rows the plot reads).
+        if (csv) *csv << name << ',' << budget << ",-1," << all.poses << ',' << all.undecided << ',' << all.wrong << '\n';
+    }
+    for (const double budget : args.budgets) {
+        std::printf("per distance at %.1f us:", budget);
+        for (const auto& [d, t] : tallies[budget])
+            std::printf(" d=%.2f %zu/%zu undecided %zu wrong;", d, t.undecided, t.poses, t.wrong);
+        std::printf("\n");
+    }
+}
+
+void run_model(const std::string& name, const Arguments& args, std::ofstream* csv, std::ofstream* budget_csv)
 {
     const std::filesystem::path path = std::filesystem::path(PCCD_DATA_DIR) / name;
     PCCD::Triangle_mesh_data mesh = PCCD::IO::read_triangle_mesh(path.string());
@@ -150,6 +205,10 @@ void run_model(const std::string& name, const Arguments& args, std::ofstream* cs
     for (int k = 0; k <= 12; ++k) distances.push_back(0.25 * k);
     const auto poses = PCCD::generate_benchmark_poses(
         {.distances = distances, .rotations_per_distance = args.rotations, .seed = args.seed});
+    if (!args.budgets.empty()) {
+        run_budgets(name, object, fcl, poses, args, budget_csv);
+        if (args.traversals.empty()) return;
+    }
     std::vector<std::string> methods{"fcl"};
     for (const auto& t : args.traversals) methods.push_back(t);
     std::map<std::string, Series> series;
@@ -218,7 +277,13 @@ int main(int argc, char** argv)
             csv = pccd_bench::open_csv(args.csv);
             csv << "model,method,distance,rotation,intersects,cpu_us,f_evaluations\n";
         }
-        for (const auto& model : args.models) run_model(model, args, args.csv.empty() ? nullptr : &csv);
+        std::ofstream budget_csv;
+        if (!args.budget_csv.empty()) {
+            budget_csv = pccd_bench::open_csv(args.budget_csv);
+            budget_csv << "model,budget_us,distance,poses,undecided,wrong\n";
+        }
+        for (const auto& model : args.models)
+            run_model(model, args, args.csv.empty() ? nullptr : &csv, args.budget_csv.empty() ? nullptr : &budget_csv);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "hierarchy_benchmark: %s\n", e.what());
         return 1;
