@@ -12,8 +12,8 @@ set ylabel "fraction of the 650 poses (%)"
 set key top right
 set grid
 set title "Time-critical first-hit queries (likelihood walk): undecided and wrong answers vs budget"
+set yrange [0:*]
 models = "bunny00.off elephant.off eight.off knot1.off"
-plot for [m in models] csv using ((strcol(1) eq m && $3 == -1) ? $2 : NaN):(100.0 * $5 / $4) \
-         with linespoints title m." undecided", \
-     for [m in models] csv using ((strcol(1) eq m && $3 == -1) ? $2 : NaN):(100.0 * $6 / $4) \
-         with linespoints dashtype 2 title m." wrong"
+rows(m) = sprintf("< awk -F, '$1 == \"%s\" && $3 == -1' %s", m, csv)
+plot for [m in models] rows(m) using 2:(100.0 * $5 / $4) with linespoints title m." undecided", \
+     for [m in models] rows(m) using 2:(100.0 * $6 / $4) with linespoints dashtype 2 title m." wrong (vs FCL)"
