@@ -4,6 +4,7 @@
 // object.
 #include "commands.h"
 
+#include <PCCD/Hierarchy/Sphere_covering.h>
 #include <PCCD/IO/read_points.h>
 #include <PCCD/Point_cloud.h>
 #include <PCCD/Point_cloud_object.h>
@@ -95,10 +96,25 @@ nlohmann::json describe_file(const std::string& path)
     const PCCD::Point_cloud_hierarchy& h = object.hierarchy();
     std::size_t leaves = 0;
     for (const auto& node : h.nodes()) leaves += node.is_leaf() ? 1 : 0;
-    out["hierarchy"] = {{"depth", h.height()},          {"nodes", h.nodes().size()},
-                        {"leaves", leaves},             {"leaf_size", h.leaf_size()},
-                        {"reaches", h.has_reach()},     {"largest_reach", h.root().reach},
-                        {"bytes", h.memory_bytes()}};
+    const auto covering_start = Clock::now();
+    const PCCD::Sphere_covering covering(h);
+    const double covering_ms = ms_since(covering_start);
+    // Covering radii of the root and, as a typical figure, the median over the leaves' parents.
+    std::vector<double> parent_radii;
+    for (PCCD::Point_cloud_hierarchy::Index i = 0; i < h.nodes().size(); ++i)
+        if (!h.node(i).is_leaf() && h.node(h.left(i)).is_leaf()) parent_radii.push_back(covering.radius(i));
+    std::sort(parent_radii.begin(), parent_radii.end());
+    out["hierarchy"] = {{"depth", h.height()},
+                        {"nodes", h.nodes().size()},
+                        {"leaves", leaves},
+                        {"leaf_size", h.leaf_size()},
+                        {"reaches", h.has_reach()},
+                        {"largest_reach", h.root().reach},
+                        {"bytes", h.memory_bytes()},
+                        {"covering", {{"subsample", covering.subsample()},
+                                      {"root_radius", covering.radius(0)},
+                                      {"median_radius_above_leaves", parent_radii.empty() ? 0.0 : parent_radii[parent_radii.size() / 2]},
+                                      {"build_ms", covering_ms}}}};
     return out;
 }
 
