@@ -26,7 +26,7 @@
 
 namespace {
 
-// Release builds run the full procedure of the issue (20 rotations per distance); Debug and
+// Release builds run the full benchmark procedure (20 rotations per distance); Debug and
 // sanitizer builds a smaller smoke version of the same code (4 rotations), to stay within CI time.
 #ifdef NDEBUG
 constexpr std::size_t rotations = 20;

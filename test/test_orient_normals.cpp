@@ -1,7 +1,8 @@
-// Tests of the normal orientation (ALGORITHMS.md section 1): Hoppe's MST propagation over any
-// ProximityGraph model (here a boost::adjacency_list k-NN graph built by brute force), the outward
-// choice per component, orientation like given normals, the bunny scan against its mesh normals,
-// and orientation with hints (some normals given, some missing) against analytic sphere normals.
+// Tests of the normal orientation (doc/algorithms.md, "Normal orientation"): Hoppe's MST
+// propagation over any ProximityGraph model (here a boost::adjacency_list k-NN graph built by brute
+// force), the outward choice per component, orientation like given normals, the bunny scan against
+// its mesh normals, and orientation with hints (some normals given, some missing) against analytic
+// sphere normals.
 #include "surface_test_helpers.h"
 
 #include <PCCD/IO/read_triangle_mesh.h>
