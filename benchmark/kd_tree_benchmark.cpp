@@ -1,4 +1,4 @@
-// Kd-tree choice for Point_cloud (foundation issue, item 6): nanoflann (PCCD::Kd_tree) against
+// Kd-tree choice for Point_cloud: nanoflann (PCCD::Kd_tree) against
 // CGAL's Kd_tree + Orthogonal_k_neighbor_search, on the same points and queries.
 // Measures build time and the time of Q k-nearest-neighbour queries, each the median of R runs.
 //

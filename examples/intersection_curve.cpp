@@ -1,8 +1,9 @@
 // Points on the intersection curves of two point cloud surfaces, at a density the caller chooses
-// (ALGORITHMS.md section 6): a sphere and a torus whose tube straddles it meet in two circles.
-// intersection_points() searches the whole overlap, keeps points at least point_spacing apart and
-// projects each candidate onto both surfaces (verified contacts); the result is written to a PLY file
-// (argument 1, default intersection_curve.ply) and compared with the exact curves.
+// (doc/algorithms.md, "Interpolation search"): a sphere and a torus whose tube straddles it meet in
+// two circles. intersection_points() searches the whole overlap, keeps points at least
+// point_spacing apart and projects each candidate onto both surfaces (verified contacts); the
+// result is written to a PLY file (argument 1, default intersection_curve.ply) and compared with
+// the exact curves.
 #include <PCCD/IO/write_points.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>

@@ -1,4 +1,4 @@
-// Bounded work (issue 7, item 5; doc/reliability.md, "Bounded work"): every loop whose length
+// Bounded work (doc/reliability.md, "Bounded work"): every loop whose length
 // depends on the data has a stated bound, and adversarial inputs stay within it. The interpolation
 // search on paths along which f is not monotone (a wavy surface crossing a flat one several times
 // per path), the sample counts of both leaf intersectors, the evaluation budget, the hierarchy

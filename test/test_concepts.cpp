@@ -1,5 +1,5 @@
 // Compile-time checks that every shipped model satisfies its concept and that unrelated types are
-// rejected; plus a user-defined point type going through a point map (issue: foundation, item 5).
+// rejected; plus a user-defined point type going through a point map.
 #include <PCCD/Eigen_kernel.h>
 #include <PCCD/Identity_point_map.h>
 #include <PCCD/Intersection/do_intersect.h>

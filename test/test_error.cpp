@@ -1,4 +1,4 @@
-// The exception hierarchy and the check macros (issue: foundation, item 9).
+// The exception hierarchy and the check macros.
 #include <PCCD/Error.h>
 #include <PCCD/Random.h>
 

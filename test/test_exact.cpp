@@ -30,6 +30,7 @@
 #include <PCCD/Rigid_transform_3.h>
 #include <PCCD/Sampling/Similarity_3.h>
 #include <PCCD/Sampling/pose_generator.h>
+#include "data_helpers.h"
 
 namespace {
 
@@ -454,8 +455,7 @@ TEST_CASE("exact meshes: CGAL's sphere.off vs the analytic answer", "[exact][mes
 {
     Triangle_mesh_data data;
     if (!read_data_mesh("sphere.off", data)) {
-        WARN("PCCD_DATA_DIR is empty (libcgal-demo not installed): sphere.off test skipped");
-        return;
+        PCCD_SKIP_TEST("sphere.off of libcgal-demo not found (PCCD_DATA_DIR is empty)");
     }
     // sphere.off: radius 0.5 about the origin, coordinates given to 4-5 digits.
     check_sphere_meshes_against_analytic(data, 0.5);

@@ -23,10 +23,11 @@
 #include <memory>
 #include <string>
 #include <vector>
+#include "data_helpers.h"
 
 namespace {
 
-// Release builds run the full procedure of the issue (20 rotations per distance); Debug and
+// Release builds run the full benchmark procedure (20 rotations per distance); Debug and
 // sanitizer builds a smaller smoke version of the same code (4 rotations), to stay within CI time.
 #ifdef NDEBUG
 constexpr std::size_t rotations = 20;
@@ -91,8 +92,7 @@ TEST_CASE("Validation on the bunny: do_intersect against CGAL's exact answer", "
 {
     const Bunny* b = bunny();
     if (!b) {
-        WARN("PCCD_DATA_DIR is empty (libcgal-demo not installed): bunny validation skipped");
-        return;
+        PCCD_SKIP_TEST("bunny00.off of libcgal-demo not found (PCCD_DATA_DIR is empty): bunny validation");
     }
     const auto poses = PCCD::generate_benchmark_poses({.rotations_per_distance = rotations, .seed = 1});
     std::map<double, Tally> isearch_by_d, rst_by_d;
@@ -158,8 +158,7 @@ TEST_CASE("Validation on the bunny: intersection points against the exact polyli
 {
     const Bunny* b = bunny();
     if (!b) {
-        WARN("PCCD_DATA_DIR is empty (libcgal-demo not installed): bunny curve validation skipped");
-        return;
+        PCCD_SKIP_TEST("bunny00.off of libcgal-demo not found (PCCD_DATA_DIR is empty): bunny curve validation");
     }
     // Intersecting, non-grazing poses spread over the distances.
     const auto poses = PCCD::generate_benchmark_poses(

@@ -1,5 +1,5 @@
 // Point_cloud and Kd_tree against brute force on random, duplicated, planar and collinear inputs,
-// in float and double (issue: foundation, item 6).
+// in float and double.
 #include <PCCD/Point_cloud.h>
 #include <PCCD/Random.h>
 

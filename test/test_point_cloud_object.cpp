@@ -1,5 +1,6 @@
-// Tests of Point_cloud_object (DESIGN.md "Object"): one-call preprocessing, its reported state,
-// and saving and loading (bit-for-bit round trip, corrupted and foreign files rejected).
+// Tests of Point_cloud_object (doc/design.md, "Map, in data-flow order": the whole preprocessed
+// object): one-call preprocessing, its reported state, and saving and loading (bit-for-bit round
+// trip, corrupted and foreign files rejected).
 #include "surface_test_helpers.h"
 
 #include <PCCD/Point_cloud_object.h>

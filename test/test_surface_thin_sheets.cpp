@@ -1,9 +1,10 @@
-// The reason the geodesic kernel exists (ALGORITHMS.md section 1): two parallel sheets (the faces of
-// a thin plate, Parallel_sheets_shape) at a gap of 1.5 kernel support radii R. Between the sheets,
-// in the band of points within R of both sheets, the Euclidean kernel mixes the two sheets ("bleeds")
-// and f nearly vanishes halfway, where the true distance is 0.75 R: a ghost surface between the
-// sheets. The geodesic kernel only reaches points connected in the proximity graph, which does not
-// join the sheets, so f has exactly two zero sheets, at the right places.
+// The reason the geodesic kernel exists (doc/algorithms.md, "Euclidean and geodesic distance"): two
+// parallel sheets (the faces of a thin plate, Parallel_sheets_shape) at a gap of 1.5 kernel support
+// radii R. Between the sheets, in the band of points within R of both sheets, the Euclidean kernel
+// mixes the two sheets ("bleeds") and f nearly vanishes halfway, where the true distance is 0.75 R:
+// a ghost surface between the sheets. The geodesic kernel only reaches points connected in the
+// proximity graph, which does not join the sheets, so f has exactly two zero sheets, at the right
+// places.
 //
 // Setup: 2 x 2 plate, N = 20000 points (mean spacing s ~ 0.01 per sheet), R = 0.075 ~ 7.5 s (the
 // support the default eta = 3 gives at this density), h = R / sqrt(-ln 1e-2), gap = 1.5 R, the

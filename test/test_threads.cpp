@@ -1,4 +1,4 @@
-// Thread safety and determinism of the intersection queries (issue 7, item 4; doc/reliability.md,
+// Thread safety and determinism of the intersection queries (doc/reliability.md,
 // "Threads"): two shared preprocessed objects (a sampled sphere and torus) answer ~200 queries --
 // colliding and separate poses, both leaf intersectors, do_intersect() and intersection_points() --
 // sequentially, from 4 threads taking interleaved queries, and from 4 threads taking them in

@@ -1,5 +1,6 @@
-// Tests of the implicit surface f(x) = n(x) . (x - a(x)) (ALGORITHMS.md section 1) against the exact
-// signed distance of analytic shapes, brute-force evaluations, and its undefined region.
+// Tests of the implicit surface f(x) = n(x) . (x - a(x)) (doc/algorithms.md, "The implicit
+// surface") against the exact signed distance of analytic shapes, brute-force evaluations, and its
+// undefined region.
 //
 // Setup (all tests): Point_cloud_object with its defaults (r-SIG r = 3, r(P) the 0.99 quantile,
 // eta = 3, theta_eps = 1e-2), shapes sphere (radius 1), torus (R = 1, r = 0.4) and plane patch
@@ -271,8 +272,8 @@ TEST_CASE("f is degenerate, not defined, where the weighted points do not determ
 
 namespace {
 
-// Brute force over all points: the definition of ALGORITHMS.md section 1 with Eigen's iterative
-// solver; `distance(j)` gives d(x, p_j).
+// Brute force over all points: the definition of doc/algorithms.md, "The implicit surface" with
+// Eigen's iterative solver; `distance(j)` gives d(x, p_j).
 //
 // With `normals` (the sphere fit, doc/manual/surface.md "The fit: plane or sphere"): the algebraic
 // sphere s(y) = u0 + u . y + u4 |y|^2 whose gradient best matches the normals in the weighted

@@ -179,7 +179,7 @@ void run_bench(const Bench_options& o)
 void register_bench(CLI::App& app)
 {
     auto* cmd = app.add_subcommand(
-        "bench", "Benchmark procedure of ALGORITHMS.md section 8: first-hit queries over random poses per distance");
+        "bench", "Benchmark procedure of doc/algorithms.md (\"Benchmark procedure\"): first-hit queries over random poses per distance");
     auto o = std::make_shared<Bench_options>();
     cmd->add_option("FILE", o->file, "Mesh (.off, .ply with faces: sampled) or point cloud (.ply, .off, .xyz, .pwn)")
         ->required();

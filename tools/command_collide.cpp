@@ -2,10 +2,13 @@
 //   [--method isearch|rst] [--mode first|all] [--seed S] [--out points.ply] [--json] [--cases FILE]:
 // whether two point clouds, each posed by a rigid transform, intersect (do_intersect, --mode first)
 // or where (intersection_points, --mode all), with the query's counters and wall time
-// (ALGORITHMS.md sections 5 and 6). Each object is preprocessed once; with --cases every row of a
+// (doc/algorithms.md, "Randomized sampling" and "Interpolation search"); --png draws the query.
+// Each object is preprocessed once; with --cases every row of a
 // CSV file of pose pairs is answered with the same preprocessed objects.
 #include "commands.h"
 #include "intersection_support.h"
+#include "render_objects.h"
+#include "transform_options.h"
 
 #include <PCCD/IO/write_points.h>
 #include <PCCD/Rigid_transform_3.h>
@@ -42,64 +45,8 @@ struct Collide_options {
     std::string cases;
     std::string hierarchy = "likelihood";
     double budget_us = 0.0;
+    std::string png;
 };
-
-/// The number spelled by the whole of `token`, if it is one.
-std::optional<double> parse_number(const std::string& token)
-{
-    if (token.empty()) return std::nullopt;
-    errno = 0;
-    char* end = nullptr;
-    const double value = std::strtod(token.c_str(), &end);
-    if (end != token.c_str() + token.size() || errno == ERANGE) return std::nullopt;
-    return value;
-}
-
-/// The fields of `text` separated by commas and/or white space.
-std::vector<std::string> split_fields(const std::string& text)
-{
-    std::string spaced = text;
-    for (char& c : spaced)
-        if (c == ',' || c == ';' || c == '\t' || c == '\r') c = ' ';
-    std::istringstream in(spaced);
-    std::vector<std::string> fields;
-    for (std::string field; in >> field;) fields.push_back(field);
-    return fields;
-}
-
-/// The rigid transform given by 12 numbers (3x4 row-major, rotation | translation); `what` names
-/// the source in error messages. Rigid_transform_3 rejects non-rigid matrices.
-PCCD::Rigid_transform_3<double> make_transform(const std::vector<std::string>& fields, std::size_t first,
-                                               const std::string& what)
-{
-    std::array<double, 12> m{};
-    for (std::size_t i = 0; i < 12; ++i) {
-        const std::optional<double> value = parse_number(fields[first + i]);
-        if (!value)
-            throw PCCD::Invalid_input(what + ": \"" + fields[first + i] + "\" (number " + std::to_string(i + 1) +
-                                      ") is not a number");
-        m[i] = *value;
-    }
-    try {
-        return PCCD::Rigid_transform_3<double>(m);
-    } catch (const PCCD::Invalid_input& e) {
-        throw PCCD::Invalid_input(what + ": " + e.what());
-    }
-}
-
-/// The transform of --transform-a / --transform-b: identity when absent, else 12 numbers given as
-/// separate arguments or in one quoted string.
-PCCD::Rigid_transform_3<double> option_transform(const std::vector<std::string>& arguments, const std::string& option)
-{
-    if (arguments.empty()) return {};
-    std::string joined;
-    for (const std::string& a : arguments) joined += a + ' ';
-    const std::vector<std::string> fields = split_fields(joined);
-    if (fields.size() != 12)
-        throw PCCD::Invalid_input(option + " expects 12 numbers (3x4 row-major: r00 r01 r02 t0 r10 ... t2), got " +
-                                  std::to_string(fields.size()));
-    return make_transform(fields, 0, option);
-}
 
 /// One pose pair of a --cases file and the line it came from.
 struct Pose_case {
@@ -247,11 +194,23 @@ void run_collide(const Collide_options& o)
             r["out"] = o.out;
         }
     }
+    r["png"] = nullptr;
+    if (!o.png.empty()) {
+        pccd_render::Scene scene;
+        scene.clouds.push_back(cloud_layer(a.object, pose_a, pccd_render::colour_a));
+        scene.clouds.push_back(cloud_layer(b.object, pose_b, pccd_render::colour_b));
+        scene.markers.push_back(curve_layer(t.result.points, 0.5 * scene.clouds.front().splat_radius));
+        render_to_png(scene, std::nullopt, 800, 600, o.png);
+        r["png"] = std::filesystem::absolute(o.png).string();
+    }
     if (o.json)
         std::cout << r.dump(2) << '\n';
     else {
         print_summary(r);
         if (!r["out"].is_null()) std::printf("wrote %zu points to %s\n", t.result.points.size(), o.out.c_str());
+        if (!r["png"].is_null())
+            std::printf("wrote %s: A blue, B gold, %zu intersection point%s red\n", r["png"].get<std::string>().c_str(),
+                        t.result.points.size(), t.result.points.size() == 1 ? "" : "s");
     }
 }
 
@@ -286,13 +245,16 @@ void register_collide(CLI::App& app)
         ->check(CLI::NonNegativeNumber);
     auto* out = cmd->add_option("--out", o->out, "Write the intersection points to this file (.ply, .off, .xyz)");
     auto* json = cmd->add_flag("--json", o->json, "Print one JSON object instead of text");
+    auto* png = cmd->add_option("--png", o->png,
+                                "Draw the posed objects (A blue, B gold) and the points found (red) into this PNG file");
     cmd->add_option("--cases", o->cases,
                     "CSV of pose pairs, 24 numbers a row (T_A then T_B, 3x4 row-major); prints "
                     "case,intersects,f_evaluations,query_us,points")
         ->excludes(ta)
         ->excludes(tb)
         ->excludes(out)
-        ->excludes(json);
+        ->excludes(json)
+        ->excludes(png);
     cmd->callback([o] { run_collide(*o); });
 }
 

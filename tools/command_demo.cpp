@@ -1,9 +1,12 @@
 // pccd demo: a tour of PCCD on built-in data (the scanned bunny, or the procedural torus when
 // libcgal-demo is absent): sampling, the point cloud and its kd-tree, the preprocessed object
 // (proximity graph, CPSP map, oriented normals) and its implicit surface, and two copies of it
-// collided at benchmark poses (do_intersect with both policies, intersection_points).
+// collided at benchmark poses (do_intersect with both policies, intersection_points). It draws the
+// two posed copies and their intersection curve (pccd-demo.png) and, when gnuplot is installed, its
+// table of query times (pccd-demo-times.png), and says where.
 #include "commands.h"
 #include "demo_data.h"
+#include "render_objects.h"
 
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud.h>
@@ -16,7 +19,13 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
 #include <vector>
 
 namespace pccd_tool {
@@ -28,10 +37,64 @@ using pccd_bench::ms_since;
 struct Demo_options {
     std::size_t points = 30000;
     std::uint64_t seed = 1;
+    std::string png = "pccd-demo.png";
+    std::string times_png = "pccd-demo-times.png";
+    std::string size = "800x600";
 };
+
+/// One row of the demo's table of collisions.
+struct Timing_row {
+    double distance;
+    double isearch_us, rst_us;
+    std::size_t isearch_f, rst_f;
+};
+
+/// The gnuplot executable on PATH, if any.
+std::optional<std::filesystem::path> find_gnuplot()
+{
+    const char* path = std::getenv("PATH");
+    std::istringstream dirs(path != nullptr ? path : "");
+    for (std::string dir; std::getline(dirs, dir, ':');) {
+        if (dir.empty()) continue;
+        const std::filesystem::path candidate = std::filesystem::path(dir) / "gnuplot";
+        std::error_code error;
+        if (std::filesystem::is_regular_file(candidate, error)) return candidate;
+    }
+    return std::nullopt;
+}
+
+/// Plots the demo's query times per distance (both policies, log scale) into `path` with gnuplot;
+/// returns an empty string on success, else what went wrong.
+std::string plot_times(const std::filesystem::path& gnuplot, const std::vector<Timing_row>& rows,
+                       const std::string& object, const std::string& path)
+{
+    std::ostringstream script;
+    script << "set terminal pngcairo size 800,480 font 'sans,11'\n"
+           << "set output '" << path << "'\n"
+           << "set title 'pccd demo: first-hit queries on two copies of the " << object << " at distance d'\n"
+           << "set xlabel 'distance d of the centres (object normalized into [-1,1]^3)'\n"
+           << "set ylabel 'query time (microseconds)'\nset logscale y\nset grid\nset key top right\n"
+           << "set xrange [-0.25:" << (rows.empty() ? 3.0 : rows.back().distance + 0.25) << "]\n"
+           << "$times << EOD\n";
+    for (const Timing_row& r : rows)
+        script << r.distance << ' ' << r.isearch_us << ' ' << r.rst_us << ' ' << r.isearch_f << ' ' << r.rst_f << '\n';
+    script << "EOD\n"
+           << "plot $times using 1:2 with linespoints lw 2 pt 7 title 'interpolation search', "
+              "$times using 1:3 with linespoints lw 2 pt 5 title 'randomized sampling (RST)'\n";
+    const std::string command = "'" + gnuplot.string() + "' 2>&1";
+    FILE* pipe = popen(command.c_str(), "w");
+    if (pipe == nullptr) return "cannot start " + gnuplot.string();
+    const std::string text = script.str();
+    std::fwrite(text.data(), 1, text.size(), pipe);
+    const int status = pclose(pipe);
+    if (status != 0) return gnuplot.string() + " failed (status " + std::to_string(status) + ")";
+    if (!std::filesystem::exists(path)) return gnuplot.string() + " wrote no file";
+    return {};
+}
 
 void run_demo(const Demo_options& options)
 {
+    const auto [width, height] = pccd_render::parse_size(options.size);
     std::printf("PCCD demo\n=========\n");
     auto start = Clock::now();
     const Demo_object object = load_demo_object(options.points, options.seed);
@@ -91,7 +154,8 @@ void run_demo(const Demo_options& options)
 
     const auto poses = PCCD::generate_benchmark_poses({.distances = {0.0, 1.0, 1.5, 2.0, 2.5},
                                                        .rotations_per_distance = 1, .seed = options.seed});
-    std::printf("collisions of two copies (ALGORITHMS.md sections 5, 6, 8): A = [R_A | 0], B = [R_B | (d, 0, 0)]\n");
+    std::printf("collisions of two copies (doc/algorithms.md, \"Benchmark procedure\"): A = [R_A | 0], B = [R_B | (d, 0, 0)]\n");
+    std::vector<Timing_row> rows;
     for (const auto& pose : poses) {
         auto t0 = Clock::now();
         const PCCD::Intersection_result hit = PCCD::do_intersect(object_state, pose.pose_a, object_state, pose.pose_b);
@@ -103,16 +167,38 @@ void run_demo(const Demo_options& options)
         std::printf("  d = %.2f: interpolation search %-12s %5zu f evaluations %8.1f us | RST %-12s %6zu f evaluations %9.1f us\n",
                     pose.distance, hit.intersects ? "intersecting" : "separate", hit.counters.f_evaluations, isearch_us,
                     rst.intersects ? "intersecting" : "separate", rst.counters.f_evaluations, rst_us);
-        if (hit.intersects && pose.distance == 1.0) {
+        rows.push_back({pose.distance, isearch_us, rst_us, hit.counters.f_evaluations, rst.counters.f_evaluations});
+        if (pose.distance == 1.0) {
             t0 = Clock::now();
             const PCCD::Intersection_result curve =
-                PCCD::intersection_points(object_state, pose.pose_a, object_state, pose.pose_b);
+                PCCD::intersection_points(object_state, pose.pose_a, object_state, pose.pose_b,
+                                          {.point_spacing = 0.5 * spacing});
             double worst = 0.0;
             for (const auto& p : curve.points)
                 if (p.kind == PCCD::Intersection_point_kind::refined)
                     worst = std::max(worst, std::max(std::abs(p.f_a), std::abs(p.f_b)));
             std::printf("            intersection_points: %zu points on the curves in %.1f ms, max(|f_A|, |f_B|) <= %.2g\n",
                         curve.points.size(), ms_since(t0), worst);
+            if (!options.png.empty()) {
+                pccd_render::Scene scene;
+                scene.clouds.push_back(cloud_layer(object_state, pose.pose_a, pccd_render::colour_a));
+                scene.clouds.push_back(cloud_layer(object_state, pose.pose_b, pccd_render::colour_b));
+                scene.markers.push_back(curve_layer(curve.points, 0.5 * scene.clouds.front().splat_radius));
+                render_to_png(scene, std::nullopt, width, height, options.png);
+                std::printf("            picture: %s (A blue, B gold, the intersection curve red)\n",
+                            std::filesystem::absolute(options.png).c_str());
+            }
+        }
+    }
+    if (!options.times_png.empty()) {
+        if (const std::optional<std::filesystem::path> gnuplot = find_gnuplot()) {
+            const std::string problem = plot_times(*gnuplot, rows, object.name, options.times_png);
+            if (problem.empty())
+                std::printf("plot of the query times: %s\n", std::filesystem::absolute(options.times_png).c_str());
+            else
+                std::printf("plot of the query times not written: %s\n", problem.c_str());
+        } else {
+            std::printf("plot of the query times not written: gnuplot is not installed (Debian package gnuplot-nox)\n");
         }
     }
 }
@@ -125,6 +211,13 @@ void register_demo(CLI::App& app)
     auto options = std::make_shared<Demo_options>();
     cmd->add_option("--points", options->points, "Points to sample")->check(CLI::Range(2, 10000000));
     cmd->add_option("--seed", options->seed, "Random seed");
+    cmd->add_option("--png", options->png,
+                    "Picture of the two posed copies and their intersection curve (default pccd-demo.png; "
+                    "empty: none)");
+    cmd->add_option("--size", options->size, "Size of the picture, WIDTHxHEIGHT (default 800x600)");
+    cmd->add_option("--times-png", options->times_png,
+                    "Plot of the query times, drawn by gnuplot when installed (default pccd-demo-times.png; "
+                    "empty: none)");
     cmd->callback([options] { run_demo(*options); });
 }
 

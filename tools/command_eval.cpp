@@ -1,6 +1,6 @@
 // pccd eval FILE --at "x y z" [--at ...] [--kernel geodesic|euclidean] [--json]: the implicit
-// surface of a point file at given points (ALGORITHMS.md section 1): f, n(x), a(x), or why f is
-// undefined there. Preprocessing uses Point_cloud_object's defaults; the file's normals, when it has
+// surface of a point file at given points (doc/algorithms.md, "The implicit surface"): f, n(x),
+// a(x), or why f is undefined there. Preprocessing uses Point_cloud_object's defaults; the file's normals, when it has
 // them, are hints that orient the surface's normals (zero ones count as missing).
 #include "commands.h"
 

@@ -1,6 +1,7 @@
-// PCCD/Kd_tree.h -- exact k-nearest-neighbour and radius queries over a flat 3 x N coordinate store,
-// the spatial index under every Point_cloud (ALGORITHMS.md sections 2-3 need k-NN for the graphs,
-// the sampling radius and evaluation at arbitrary points).
+// PCCD/Kd_tree.h -- exact k-nearest-neighbour and radius queries over a flat 3 x N coordinate
+// store, the spatial index under every Point_cloud (doc/algorithms.md, "Proximity graphs and
+// geodesic distance" and "Sampling radius and sphere coverings" need k-NN for the graphs, the
+// sampling radius and evaluation at arbitrary points).
 //
 // Backed by nanoflann (chosen over CGAL's Kd_tree by benchmark/kd_tree_benchmark.cpp, figures in
 // doc/benchmarks.md). Results are sorted by (squared distance, index), so ties come out in a fixed

@@ -1,6 +1,7 @@
 // PCCD/Point_cloud.h -- an immutable point cloud: flat coordinate store, bounding box, kd-tree,
-// nearest-neighbour and radius queries, and the mean spacing. The first stage of every PCCD pipeline
-// (DESIGN.md); the graphs, the sampling radius and the surface all read the cloud through it.
+// nearest-neighbour and radius queries, and the mean spacing. The first stage of every PCCD
+// pipeline (doc/design.md, "Map, in data-flow order"); the graphs, the sampling radius and the
+// surface all read the cloud through it.
 #pragma once
 
 #include <cmath>

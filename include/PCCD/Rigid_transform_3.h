@@ -1,6 +1,6 @@
 // PCCD/Rigid_transform_3.h -- a validated rigid motion x -> R x + t (R a proper rotation), the pose
 // type taken by the collision queries and produced by the benchmark pose generator
-// (ALGORITHMS.md section 8: T_A = [R_A | 0], T_B = [R_B | (d, 0, 0)]).
+// (doc/algorithms.md, "Benchmark procedure": T_A = [R_A | 0], T_B = [R_B | (d, 0, 0)]).
 //
 // Every constructor checks that its input really is rigid: a scaling, shear, reflection or a NaN /
 // infinite entry throws PCCD::Invalid_input naming the problem. An accepted rotation is replaced by

@@ -1,7 +1,7 @@
-// PCCD/sampling_radius.h -- the sampling radius r(P) of a point cloud and its uses (ALGORITHMS.md
-// section 3, WSCG05 §4.2): a Monte-Carlo estimate of the radius at which spheres around P (or around
-// a subset P') cover the surface, the subsample rule r(P') ~ sqrt(|P| / |P'|) r(P), and the surfel
-// count estimate of the root bracketing.
+// PCCD/sampling_radius.h -- the sampling radius r(P) of a point cloud and its uses
+// (doc/algorithms.md, "Sampling radius and sphere coverings", WSCG05 §4.2): a Monte-Carlo estimate
+// of the radius at which spheres around P (or around a subset P') cover the surface, the subsample
+// rule r(P') ~ sqrt(|P| / |P'|) r(P), and the surfel count estimate of the root bracketing.
 //
 // Random points "on the surface" without a surface: the implicit surface f needs r(P) for its
 // bandwidth, so it cannot be used here. Instead, a Monte-Carlo point is drawn on the tangent disk of
@@ -187,8 +187,9 @@ double sampling_radius(const Point_cloud<K>& cloud, std::span<const std::uint32_
     return internal::sampling_radius_to(cloud, tree, options);
 }
 
-/// The subsample rule of ALGORITHMS.md section 3: r(P') ~ sqrt(|P| / |P'|) r(P) for a subset P' of
-/// `subset_size` points drawn evenly from a cloud of `size` points with sampling radius `radius`.
+/// The subsample rule of doc/algorithms.md, "Sampling radius and sphere coverings": r(P') ~
+/// sqrt(|P| / |P'|) r(P) for a subset P' of `subset_size` points drawn evenly from a cloud of
+/// `size` points with sampling radius `radius`.
 /// \throws Invalid_input unless 0 < subset_size <= size.
 inline double subsample_sampling_radius(double radius, std::size_t size, std::size_t subset_size)
 {
@@ -198,8 +199,8 @@ inline double subsample_sampling_radius(double radius, std::size_t size, std::si
 }
 
 /// Surface area estimate F ~ |A| pi r(A)^2 of a cloud part A of `points` points with sampling
-/// radius `radius` (ALGORITHMS.md section 3; the covering spheres overlap, so it errs on the large
-/// side, which makes the surfel count below conservative).
+/// radius `radius` (doc/algorithms.md, "Sampling radius and sphere coverings"; the covering spheres
+/// overlap, so it errs on the large side, which makes the surfel count below conservative).
 inline double estimated_surface_area(std::size_t points, double radius)
 {
     return double(points) * std::numbers::pi * radius * radius;
@@ -207,7 +208,7 @@ inline double estimated_surface_area(std::size_t points, double radius)
 
 /// Number of conceptual surfels of radius `surfel_radius` on the surface of a cloud part of
 /// `points` points with sampling radius `radius`: a ~ F / (pi r^2) = |A| r(A)^2 / r^2 (the `a` of
-/// the root bracketing, ALGORITHMS.md section 6.1).
+/// the root bracketing, doc/algorithms.md, "Root bracketing").
 /// \throws Invalid_input unless surfel_radius > 0.
 inline double estimated_surfel_count(std::size_t points, double radius, double surfel_radius)
 {

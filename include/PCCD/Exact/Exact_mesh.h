@@ -1,7 +1,8 @@
 // PCCD/Exact/Exact_mesh.h -- a triangle mesh prepared once for the exact reference queries of
-// PCCD/Exact/ (DESIGN.md "Exact checks"; the truth behind the validation of ALGORITHMS.md sections
-// 6-8 and the grazing rule of section 8): a CGAL Surface_mesh over the kernel with exact predicates
-// (Epick), its AABB tree, an inside/outside oracle and a few facts about its topology.
+// PCCD/Exact/ (doc/design.md, "Exact checks"; the truth behind the validation of doc/algorithms.md,
+// "Randomized sampling" and "Interpolation search", and of the grazing rule of its "Benchmark
+// procedure"): a CGAL Surface_mesh over the kernel with exact predicates (Epick), its AABB tree, an
+// inside/outside oracle and a few facts about its topology.
 //
 // Every query of a pose pair works in the local frame of one mesh and maps only the other mesh's
 // vertices into it, so the trees built here are reused for every pose: nothing is rebuilt per pose
@@ -59,8 +60,8 @@ namespace PCCD {
 /// Preprocessing (once): the soup is turned into a halfedge mesh (non-manifold vertices are
 /// duplicated and inconsistently oriented triangles flipped when needed, as by
 /// CGAL::Polygon_mesh_processing::orient_polygon_soup, which leaves the surface as a point set
-/// unchanged), an AABB tree of the triangles is built with accelerated distance queries, the mesh is
-/// tested for self-intersections, vertices used by no triangle are dropped, one vertex of each
+/// unchanged), an AABB tree of the triangles is built with accelerated distance queries, the mesh
+/// is tested for self-intersections, vertices used by no triangle are dropped, one vertex of each
 /// connected component is kept for the containment tests, and the vertices are grouped into small
 /// ball tree for the distance queries.
 ///
@@ -153,8 +154,8 @@ public:
     bool is_closed() const { return m_data->closed; }
     /// Whether two triangles intersect other than at a shared vertex or edge (exact test).
     bool is_self_intersecting() const { return m_data->self_intersecting; }
-    /// Whether the mesh is closed and free of self-intersections, so that it bounds a volume and the
-    /// inside test bounded_side() is defined (by ray parity; the orientation does not matter).
+    /// Whether the mesh is closed and free of self-intersections, so that it bounds a volume and
+    /// the inside test bounded_side() is defined (by ray parity; the orientation does not matter).
     bool encloses_volume() const { return m_data->side.has_value(); }
     /// One vertex of each connected component of mesh().
     const std::vector<Vertex_index>& component_representatives() const { return m_data->representatives; }

@@ -1,8 +1,8 @@
-// PCCD/Exact/mesh_intersection.h -- the exact reference for two posed triangle meshes (DESIGN.md
-// "Exact checks"): whether their surfaces intersect, whether one lies inside the other without
-// surface contact, and the intersection curves as polylines. It is the truth against which the
-// stochastic intersection tests of ALGORITHMS.md sections 6-7 are validated on the benchmark poses
-// of section 8.
+// PCCD/Exact/mesh_intersection.h -- the exact reference for two posed triangle meshes
+// (doc/design.md, "Exact checks"): whether their surfaces intersect, whether one lies inside the
+// other without surface contact, and the intersection curves as polylines. It is the truth against
+// which the stochastic intersection tests of doc/algorithms.md, "Randomized sampling" and
+// "Interpolation search", are validated on the poses of its "Benchmark procedure".
 //
 // Surface intersection is what the point-cloud methods detect (a sign change of the implicit
 // functions along a surface), so exact_do_intersect answers "do the surfaces touch or cross"; a

@@ -1,8 +1,8 @@
 // PCCD/Exact/mesh_separation.h -- a signed separation measure of two posed triangle meshes and the
-// pose classification of ALGORITHMS.md section 8: a pose whose exact separation (gap between the
-// surfaces) or penetration is below one sampling radius is *grazing*, because a point cloud with
-// that resolution cannot decide it; such poses are counted apart when PCCD's answers are validated
-// against the exact reference (DESIGN.md "Exact checks").
+// pose classification of doc/algorithms.md, "Benchmark procedure": a pose whose exact separation
+// (gap between the surfaces) or penetration is below one sampling radius is *grazing*, because a
+// point cloud with that resolution cannot decide it; such poses are counted apart when PCCD's
+// answers are validated against the exact reference (doc/design.md, "Exact checks").
 //
 // Includes CGAL's Polygon_mesh_processing (through Exact_mesh.h): keep it out of the core headers.
 #pragma once
@@ -250,7 +250,7 @@ inline void check_sampling_radius(double sampling_radius)
 /// \name Separation and grazing classification
 /// @{
 
-/// The exact-reference separation of two posed meshes (ALGORITHMS.md section 8).
+/// The exact-reference separation of two posed meshes (doc/algorithms.md, "Benchmark procedure").
 ///
 /// What is computed:
 /// - `surfaces_intersect`: exact, as exact_do_intersect.

@@ -1,8 +1,8 @@
-// PCCD/Exact/sphere_sphere_intersection.h -- the analytic exact reference for two spheres (DESIGN.md
-// "Exact checks"): whether their surfaces intersect, decided exactly in rational arithmetic, the
-// intersection circle, points sampled on it, and the closed-form separation or penetration that
-// classifies a pose as in ALGORITHMS.md section 8 (same definitions as exact_separation for meshes,
-// so the two can be compared).
+// PCCD/Exact/sphere_sphere_intersection.h -- the analytic exact reference for two spheres
+// (doc/design.md, "Exact checks"): whether their surfaces intersect, decided exactly in rational
+// arithmetic, the intersection circle, points sampled on it, and the closed-form separation or
+// penetration that classifies a pose as in doc/algorithms.md, "Benchmark procedure" (same
+// definitions as exact_separation for meshes, so the two can be compared).
 //
 // Uses CGAL's exact rational number type only (no Polygon_mesh_processing).
 #pragma once

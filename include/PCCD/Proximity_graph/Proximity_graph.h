@@ -1,8 +1,9 @@
-// PCCD/Proximity_graph/Proximity_graph.h -- PCCD's default graph storage (ALGORITHMS.md section 2):
-// a compact static Boost.Graph model (boost::compressed_sparse_row_graph with 32-bit vertices) whose
-// edges carry their length and a "virtual" flag, plus what it was built as (k-NN graph, SIG, r-SIG).
-// The builders are knn_graph() and sphere_of_influence_graph(); every algorithm that reads a graph
-// also accepts any other model of ProximityGraph.
+// PCCD/Proximity_graph/Proximity_graph.h -- PCCD's default graph storage (doc/algorithms.md,
+// "Proximity graphs and geodesic distance"): a compact static Boost.Graph model
+// (boost::compressed_sparse_row_graph with 32-bit vertices) whose edges carry their length and a
+// "virtual" flag, plus what it was built as (k-NN graph, SIG, r-SIG). The builders are knn_graph()
+// and sphere_of_influence_graph(); every algorithm that reads a graph also accepts any other model
+// of ProximityGraph.
 #pragma once
 
 #include <cstddef>

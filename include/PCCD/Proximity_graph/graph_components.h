@@ -1,6 +1,7 @@
 // PCCD/Proximity_graph/graph_components.h -- connected components of a proximity graph, with or
-// without its virtual edges (ALGORITHMS.md section 2: the surface sees the graph without virtual
-// edges; normal orientation propagates per component). Works on any ProximityGraph model.
+// without its virtual edges (doc/algorithms.md, "Long edges and virtual edges": the surface sees
+// the graph without virtual edges; normal orientation propagates per component). Works on any
+// ProximityGraph model.
 #pragma once
 
 #include <cstddef>

@@ -1,6 +1,6 @@
 // PCCD/Proximity_graph/knn_graph.h -- the symmetric k-nearest-neighbour graph over a point cloud
-// (ALGORITHMS.md section 2), the simplest proximity graph, built with one kd-tree query per point,
-// in parallel when TBB is available.
+// (doc/algorithms.md, "Proximity graphs and geodesic distance"), the simplest proximity graph,
+// built with one kd-tree query per point, in parallel when TBB is available.
 #pragma once
 
 #include <cstddef>

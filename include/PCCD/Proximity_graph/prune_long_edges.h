@@ -1,7 +1,7 @@
-// PCCD/Proximity_graph/prune_long_edges.h -- the long-edge outlier test of ALGORITHMS.md section 2
-// (WSCG05 §3.2 and §4.5): edges far longer than the local edge scale are marked *virtual* rather
-// than removed. The surface ignores virtual edges for its geodesic distances; the interpolation
-// search may still walk them to bridge holes and boundaries.
+// PCCD/Proximity_graph/prune_long_edges.h -- the long-edge outlier test of doc/algorithms.md, "Long
+// edges and virtual edges" (WSCG05 §3.2 and §4.5): edges far longer than the local edge scale are
+// marked *virtual* rather than removed. The surface ignores virtual edges for its geodesic
+// distances; the interpolation search may still walk them to bridge holes and boundaries.
 #pragma once
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 // PCCD/Proximity_graph/sphere_of_influence_graph.h -- the sphere-of-influence graph (SIG) and its
-// r-SIG generalization over a point cloud (ALGORITHMS.md section 2, WSCG05 §3.2), built in
-// O(N log N) expected time with kd-tree queries, in parallel when TBB is available.
+// r-SIG generalization over a point cloud (doc/algorithms.md, "Sphere-of-influence graphs", WSCG05
+// §3.2), built in O(N log N) expected time with kd-tree queries, in parallel when TBB is available.
 #pragma once
 
 #include <cstddef>

@@ -1,7 +1,7 @@
 // PCCD/Sampling/Parallel_sheets_shape.h -- two parallel rectangles facing away from each other at a
 // given gap, the two faces of a thin plate without its rim: reference geometry for the tests of
-// ALGORITHMS.md sections 1 and 8 (a thin gap across which a Euclidean kernel bleeds and a geodesic
-// kernel must not).
+// doc/algorithms.md, "Euclidean and geodesic distance" and "Benchmark procedure" (a thin gap across
+// which a Euclidean kernel bleeds and a geodesic kernel must not).
 #pragma once
 
 #include <array>

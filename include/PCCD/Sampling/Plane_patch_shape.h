@@ -1,6 +1,7 @@
 // PCCD/Sampling/Plane_patch_shape.h -- a rectangle in 3-space (a surface with a boundary) with its
-// signed distance, closest point and normal, and a uniform sampler: reference geometry for the tests
-// of ALGORITHMS.md section 8 (boundaries, where the implicit surface over a cloud must stop).
+// signed distance, closest point and normal, and a uniform sampler: reference geometry for the
+// tests of doc/algorithms.md, "Real scans" (boundaries, where the implicit surface over a cloud
+// must stop).
 #pragma once
 
 #include <algorithm>

@@ -1,6 +1,6 @@
-// PCCD/Sampling/Sphere_shape.h -- a sphere with its exact signed distance, closest point and normal,
-// and a uniform-by-area sampler: reference geometry for the tests and benchmarks of ALGORITHMS.md
-// section 8 (and the analytic truth of the exact checks).
+// PCCD/Sampling/Sphere_shape.h -- a sphere with its exact signed distance, closest point and
+// normal, and a uniform-by-area sampler: reference geometry for the tests and benchmarks of
+// doc/algorithms.md, "Benchmark procedure" (and the analytic truth of the exact checks).
 #pragma once
 
 #include <algorithm>

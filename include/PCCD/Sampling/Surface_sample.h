@@ -1,6 +1,7 @@
-// PCCD/Sampling/Surface_sample.h -- the types shared by PCCD's surface samplers (analytic shapes and
-// triangle meshes): the sampling options, one sampled point with its normal, and a sample of many
-// points as 3 x N matrices ready for Point_cloud. Test data for ALGORITHMS.md section 8.
+// PCCD/Sampling/Surface_sample.h -- the types shared by PCCD's surface samplers (analytic shapes
+// and triangle meshes): the sampling options, one sampled point with its normal, and a sample of
+// many points as 3 x N matrices ready for Point_cloud. Test data for doc/algorithms.md, "Benchmark
+// procedure".
 #pragma once
 
 #include <cmath>

@@ -1,6 +1,7 @@
 // PCCD/Sampling/Torus_shape.h -- a ring torus around the z axis with its exact signed distance,
 // closest point and normal, and a sampler with the correct area density: reference geometry for the
-// tests and benchmarks of ALGORITHMS.md section 8 (a genus-1 surface with curvature of both signs).
+// tests and benchmarks of doc/algorithms.md, "Benchmark procedure" (a genus-1 surface with
+// curvature of both signs).
 #pragma once
 
 #include <cmath>

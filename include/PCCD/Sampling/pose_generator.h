@@ -1,7 +1,8 @@
-// PCCD/Sampling/pose_generator.h -- the random poses of the benchmark procedure (ALGORITHMS.md
-// section 8): two normalized objects, A rotated uniformly at random about the origin, B rotated
-// independently and moved to (d, 0, 0): T_A = [R_A | 0], T_B = [R_B | (d, 0, 0)], for d = 0, 0.25, ...,
-// 3 and many rotations per distance. Uniform rotations come from Shoemake's uniform quaternions.
+// PCCD/Sampling/pose_generator.h -- the random poses of the benchmark procedure (doc/algorithms.md,
+// "Benchmark procedure"): two normalized objects, A rotated uniformly at random about the origin, B
+// rotated independently and moved to (d, 0, 0): T_A = [R_A | 0], T_B = [R_B | (d, 0, 0)], for d =
+// 0, 0.25, ..., 3 and many rotations per distance. Uniform rotations come from Shoemake's uniform
+// quaternions.
 //
 // Reproducibility: the pose for (seed, d, i) is drawn from its own engine, seeded by a hash of the
 // three, so it is the same whichever distances and how many rotations are asked for, on every

@@ -1,6 +1,7 @@
 // PCCD/Sampling/sample_triangle_mesh.h -- uniform (area-weighted) random points on a triangle mesh
 // given as a vertex range and index triples, with each sample's triangle normal and triangle index:
-// how PCCD turns the scanned meshes of the benchmarks (ALGORITHMS.md section 8) into point clouds.
+// how PCCD turns the scanned meshes of the benchmarks (doc/algorithms.md, "Benchmark procedure")
+// into point clouds.
 #pragma once
 
 #include <algorithm>

@@ -1,5 +1,6 @@
 // PCCD/Surface/Euclidean_distance.h -- the Euclidean distance policy of the implicit surface
-// (ALGORITHMS.md section 1): the neighbours of a query are found by a kd-tree radius query.
+// (doc/algorithms.md, "Euclidean and geodesic distance"): the neighbours of a query are found by a
+// kd-tree radius query.
 #pragma once
 
 #include <cmath>

@@ -1,6 +1,7 @@
-// PCCD/Surface/Gaussian_weight.h -- the Gaussian kernel with bounded support that weights the points
-// of the implicit surface (ALGORITHMS.md section 1): theta(d) = exp(-d^2 / h^2), ignored below the
-// threshold theta_eps, i.e. beyond the support radius h sqrt(-ln theta_eps).
+// PCCD/Surface/Gaussian_weight.h -- the Gaussian kernel with bounded support that weights the
+// points of the implicit surface (doc/algorithms.md, "Weights, support and bandwidth"): theta(d) =
+// exp(-d^2 / h^2), ignored below the threshold theta_eps, i.e. beyond the support radius h sqrt(-ln
+// theta_eps).
 #pragma once
 
 #include <cmath>

@@ -1,7 +1,8 @@
 // PCCD/Surface/Geodesic_distance.h -- the geodesic distance policy of the implicit surface
-// (ALGORITHMS.md sections 1 and 2): d(x, p) = |x - p*| + g(p*, p), p* the cloud point nearest to x
-// and g the shortest-path length in the proximity graph, read from the close-pairs shortest-path
-// (CPSP) map. At a cloud point the neighbours are its CPSP list: no kd-tree query at all.
+// (doc/algorithms.md, "Euclidean and geodesic distance"): d(x, p) = |x - p*| + g(p*, p), p* the
+// cloud point nearest to x and g the shortest-path length in the proximity graph, read from the
+// close-pairs shortest-path (CPSP) map. At a cloud point the neighbours are its CPSP list: no
+// kd-tree query at all.
 #pragma once
 
 #include <cmath>

@@ -1,8 +1,9 @@
-// PCCD/Surface/WLS_surface.h -- the implicit surface over a point cloud (ALGORITHMS.md section 1):
-// f(x) = n(x) . (x - a(x)), with a(x) the weighted mean of the cloud points near x, n(x) the
-// eigenvector of the smallest eigenvalue of their weighted covariance, oriented like the normal
-// stored at x's nearest cloud point. The distance (Euclidean or geodesic) and the weight (Gaussian
-// with bounded support) are policies. f is undefined far from the cloud, and says so.
+// PCCD/Surface/WLS_surface.h -- the implicit surface over a point cloud (doc/algorithms.md, "The
+// implicit surface"): f(x) = n(x) . (x - a(x)), with a(x) the weighted mean of the cloud points
+// near x, n(x) the eigenvector of the smallest eigenvalue of their weighted covariance, oriented
+// like the normal stored at x's nearest cloud point. The distance (Euclidean or geodesic) and the
+// weight (Gaussian with bounded support) are policies. f is undefined far from the cloud, and says
+// so.
 #pragma once
 
 #include <cmath>
@@ -86,13 +87,13 @@ struct Surface_evaluation {
     std::optional<double> value_if_defined() const { return defined() ? std::optional<double>(value) : std::nullopt; }
 };
 
-/// The implicit surface f(x) = n(x) . (x - a(x)) of a point cloud (ALGORITHMS.md section 1):
-///   a(x) = sum theta(d(x, p_i)) p_i / sum theta(d(x, p_i)),
-///   B(x) = sum theta(d(x, p_i)) (p_i - a(x)) (p_i - a(x))^T,  n(x) = eigenvector of B's smallest
-///   eigenvalue, with the sign of the normal stored at x's nearest cloud point.
-/// Only the points with d(x, p_i) <= weight.support_radius() take part. With Surface_fit::sphere,
-/// f(x) is instead the signed distance from x to the algebraic sphere fitted to the same weighted
-/// points and their stored normals (doc/manual/surface.md, "The fit: plane or sphere").
+/// The implicit surface f(x) = n(x) . (x - a(x)) of a point cloud (doc/algorithms.md, "The implicit
+/// surface"): a(x) = sum theta(d(x, p_i)) p_i / sum theta(d(x, p_i)), B(x) = sum theta(d(x, p_i))
+/// (p_i - a(x)) (p_i - a(x))^T,  n(x) = eigenvector of B's smallest eigenvalue, with the sign of
+/// the normal stored at x's nearest cloud point. Only the points with d(x, p_i) <=
+/// weight.support_radius() take part. With Surface_fit::sphere, f(x) is instead the signed distance
+/// from x to the algebraic sphere fitted to the same weighted points and their stored normals
+/// (doc/manual/surface.md, "The fit: plane or sphere").
 ///
 /// \tparam Distance a model of SurfaceDistance: Euclidean_distance or Geodesic_distance.
 /// \tparam Weight a model of SurfaceWeight (Gaussian_weight by default).

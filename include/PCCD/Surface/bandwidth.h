@@ -1,7 +1,7 @@
-// PCCD/Surface/bandwidth.h -- the kernel bandwidth of the implicit surface (ALGORITHMS.md section 1,
-// from the talk): h(P) = eta r(P) / sqrt(-ln theta_eps), r(P) the sampling radius of the cloud, so
-// that the kernel's support radius h sqrt(-ln theta_eps) is eta r(P) whatever theta_eps; or a
-// bandwidth the user gives.
+// PCCD/Surface/bandwidth.h -- the kernel bandwidth of the implicit surface (doc/algorithms.md,
+// "Weights, support and bandwidth", from the talk): h(P) = eta r(P) / sqrt(-ln theta_eps), r(P) the
+// sampling radius of the cloud, so that the kernel's support radius h sqrt(-ln theta_eps) is eta
+// r(P) whatever theta_eps; or a bandwidth the user gives.
 #pragma once
 
 #include <cmath>

@@ -1,6 +1,6 @@
 // PCCD/Surface/estimate_normals.h -- the unoriented WLS normal n(p_i) at every point of a cloud
-// (ALGORITHMS.md section 1), the raw material of normal orientation: the same fit as WLS_surface,
-// evaluated at the cloud points themselves.
+// (doc/algorithms.md, "The implicit surface"), the raw material of normal orientation: the same fit
+// as WLS_surface, evaluated at the cloud points themselves.
 #pragma once
 
 #include <algorithm>

@@ -1,8 +1,9 @@
 // PCCD/Surface/orient_normals.h -- consistent orientation of the per-point normals that fix the
-// sign of the implicit surface (ALGORITHMS.md section 1): propagation along a minimum spanning tree
-// of the proximity graph with edge weight 1 - |n_i . n_j| (Hoppe et al. 1992), one tree per connected
-// component; the same with hints (normals read from a file, some of them possibly missing) that
-// decide the sign where they exist; or orientation like a complete set of reference normals.
+// sign of the implicit surface (doc/algorithms.md, "Normal orientation"): propagation along a
+// minimum spanning tree of the proximity graph with edge weight 1 - |n_i . n_j| (Hoppe et al.
+// 1992), one tree per connected component; the same with hints (normals read from a file, some of
+// them possibly missing) that decide the sign where they exist; or orientation like a complete set
+// of reference normals.
 #pragma once
 
 #include <algorithm>

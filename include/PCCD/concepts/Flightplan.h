@@ -1,6 +1,7 @@
 // PCCD/concepts/Flightplan.h -- concept of the vertex trajectories ("flightplans") that drive the
-// kinetic AABB tree (ALGORITHMS.md section 7): a position at any time and, for two flightplans of
-// the same type, the next time at which one coordinate of the first drops below the other's.
+// kinetic AABB tree (doc/algorithms.md, "Kinetic AABB tree"): a position at any time and, for two
+// flightplans of the same type, the next time at which one coordinate of the first drops below the
+// other's.
 #pragma once
 
 #include <concepts>

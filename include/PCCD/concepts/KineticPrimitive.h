@@ -1,5 +1,6 @@
 // PCCD/concepts/KineticPrimitive.h -- concept of the primitives a kinetic AABB tree is built over
-// (ALGORITHMS.md section 7): a fixed number of vertex indices whose flightplans bound the primitive.
+// (doc/algorithms.md, "Kinetic AABB tree"): a fixed number of vertex indices whose flightplans
+// bound the primitive.
 #pragma once
 
 #include <concepts>

@@ -1,5 +1,6 @@
 // PCCD/concepts/PathSource.h -- concept of the path policies the interpolation search reads its
-// shortest paths from (ALGORITHMS.md sections 2 and 6): stored (CPSP map) or computed on the fly.
+// shortest paths from (doc/algorithms.md, "Close-pairs shortest paths", "Paths on the fly" and
+// "Search along a path"): stored (CPSP map) or computed on the fly.
 #pragma once
 
 #include <concepts>

@@ -1,6 +1,6 @@
 // PCCD/concepts/PointCloudKernel.h -- concept of the geometric kernels PCCD is generic over.
 // PCCD reads a kernel only at its boundary (constructing and reading points); the hot loops work on
-// a flat coordinate store of the kernel's number type (DESIGN.md, "Generic over kernel").
+// a flat coordinate store of the kernel's number type (doc/design.md, "Generic types").
 #pragma once
 
 #include <concepts>

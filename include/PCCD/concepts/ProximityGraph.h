@@ -1,5 +1,6 @@
 // PCCD/concepts/ProximityGraph.h -- concept of the graphs PCCD walks for geodesic distances and
-// shortest paths (ALGORITHMS.md section 2): Boost.Graph models with an edge weight map.
+// shortest paths (doc/algorithms.md, "Proximity graphs and geodesic distance"): Boost.Graph models
+// with an edge weight map.
 #pragma once
 
 #include <concepts>
@@ -57,7 +58,7 @@ concept ProximityGraph = PointGraph<G> && requires(typename boost::graph_traits<
 
 /// \concept EdgeFlagMap
 /// A readable property map from the edges of graph `G` to a flag, used for the "virtual" mark of
-/// long edges (ALGORITHMS.md section 2).
+/// long edges (doc/algorithms.md, "Long edges and virtual edges").
 ///
 /// Requirement, for `const M& m` and an edge `e` of `G`: `get(m, e)` is convertible to bool.
 ///

@@ -1,5 +1,6 @@
 // PCCD/concepts/SurfaceDistance.h -- concept of the distance policies of the implicit surface
-// (ALGORITHMS.md section 1): which cloud points lie within a distance of a query, and how far.
+// (doc/algorithms.md, "Euclidean and geodesic distance"): which cloud points lie within a distance
+// of a query, and how far.
 #pragma once
 
 #include <concepts>

@@ -1,5 +1,6 @@
 // PCCD/concepts/SurfaceWeight.h -- concept of the weight policies of the implicit surface
-// (ALGORITHMS.md section 1): a kernel theta(d) of a distance with a bounded support.
+// (doc/algorithms.md, "Weights, support and bandwidth"): a kernel theta(d) of a distance with a
+// bounded support.
 #pragma once
 
 #include <concepts>

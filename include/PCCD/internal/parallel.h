@@ -1,8 +1,8 @@
-// PCCD/internal/parallel.h -- the two parallel loops PCCD's preprocessing needs (DESIGN.md, "Beyond
-// one core"): an unordered per-index loop and an ordered block pipeline whose output is consumed in
-// index order. With PCCD_HAS_TBB they run on TBB (inside an arena limited to the requested number of
-// threads); without it they run sequentially. Every caller produces results that do not depend on
-// the schedule, so both builds and every thread count give identical output.
+// PCCD/internal/parallel.h -- the two parallel loops PCCD's preprocessing needs (doc/design.md,
+// "Beyond one core"): an unordered per-index loop and an ordered block pipeline whose output is
+// consumed in index order. With PCCD_HAS_TBB they run on TBB (inside an arena limited to the
+// requested number of threads); without it they run sequentially. Every caller produces results
+// that do not depend on the schedule, so both builds and every thread count give identical output.
 #pragma once
 
 #include <algorithm>

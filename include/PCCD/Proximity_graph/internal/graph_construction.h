@@ -1,6 +1,7 @@
 // PCCD/Proximity_graph/internal/graph_construction.h -- the machinery shared by knn_graph() and
-// sphere_of_influence_graph() (ALGORITHMS.md section 2): grouping coincident points, a kd-tree over
-// the distinct positions, and the assembly of a symmetric CSR graph from a list of undirected edges.
+// sphere_of_influence_graph() (doc/algorithms.md, "Sphere-of-influence graphs"): grouping
+// coincident points, a kd-tree over the distinct positions, and the assembly of a symmetric CSR
+// graph from a list of undirected edges.
 #pragma once
 
 #include <algorithm>

@@ -1,6 +1,7 @@
 // PCCD/Surface/internal/wls_fit.h -- the weighted least-squares fit behind every evaluation of the
-// implicit surface (ALGORITHMS.md section 1): one pass over the weighted neighbours gives a(x) and
-// the weighted covariance B(x); the eigenvector of B's smallest eigenvalue is the unoriented n(x).
+// implicit surface (doc/algorithms.md, "The implicit surface"): one pass over the weighted
+// neighbours gives a(x) and the weighted covariance B(x); the eigenvector of B's smallest
+// eigenvalue is the unoriented n(x).
 #pragma once
 
 #include <cstdint>

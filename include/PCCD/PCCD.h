@@ -1,0 +1,97 @@
+// PCCD/PCCD.h -- the whole core of PCCD in one include: every public header except those that need
+// CGAL (PCCD/IO/read_*.h and write_*.h, which read and write files through CGAL, and PCCD/Exact/,
+// the exact reference). A program that includes only this header and links PCCD::PCCD (Eigen,
+// Boost, nanoflann, optionally TBB) can sample, preprocess, query and animate; see
+// doc/design.md for the stages and doc/manual.md for their use. test/test_umbrella_header.cpp
+// checks that it stays complete and free of CGAL.
+#pragma once
+
+// Foundation: kernels, points, the cloud and its kd-tree, poses, errors, randomness
+#include <PCCD/Eigen_kernel.h>
+#include <PCCD/Error.h>
+#include <PCCD/Identity_point_map.h>
+#include <PCCD/Kd_tree.h>
+#include <PCCD/Point_cloud.h>
+#include <PCCD/Point_traits.h>
+#include <PCCD/Random.h>
+#include <PCCD/Rigid_transform_3.h>
+#include <PCCD/version.h>
+
+// Concepts
+#include <PCCD/concepts/CollisionObject.h>
+#include <PCCD/concepts/Flightplan.h>
+#include <PCCD/concepts/KineticPrimitive.h>
+#include <PCCD/concepts/PathSource.h>
+#include <PCCD/concepts/PointCloudKernel.h>
+#include <PCCD/concepts/ProximityGraph.h>
+#include <PCCD/concepts/ReadablePointMap.h>
+#include <PCCD/concepts/SurfaceDistance.h>
+#include <PCCD/concepts/SurfaceWeight.h>
+
+// Plain data of files (reading and writing them needs CGAL: PCCD/IO/read_*.h, write_*.h)
+#include <PCCD/IO/Format.h>
+#include <PCCD/IO/Point_data.h>
+#include <PCCD/IO/Triangle_mesh_data.h>
+
+// Test data: shapes, mesh sampling, benchmark poses
+#include <PCCD/Sampling/Parallel_sheets_shape.h>
+#include <PCCD/Sampling/Plane_patch_shape.h>
+#include <PCCD/Sampling/Similarity_3.h>
+#include <PCCD/Sampling/Sphere_shape.h>
+#include <PCCD/Sampling/Surface_sample.h>
+#include <PCCD/Sampling/Torus_shape.h>
+#include <PCCD/Sampling/pose_generator.h>
+#include <PCCD/Sampling/sample_triangle_mesh.h>
+
+// Proximity graphs, the sampling radius, geodesic distances
+#include <PCCD/Geodesic/Close_pairs_shortest_paths.h>
+#include <PCCD/Geodesic/Paths_on_the_fly.h>
+#include <PCCD/Geodesic/Stored_paths.h>
+#include <PCCD/Geodesic/geodesic_io.h>
+#include <PCCD/Proximity_graph/Proximity_graph.h>
+#include <PCCD/Proximity_graph/graph_components.h>
+#include <PCCD/Proximity_graph/knn_graph.h>
+#include <PCCD/Proximity_graph/prune_long_edges.h>
+#include <PCCD/Proximity_graph/sphere_of_influence_graph.h>
+#include <PCCD/sampling_radius.h>
+
+// The implicit surface and the preprocessed object
+#include <PCCD/Point_cloud_object.h>
+#include <PCCD/Point_cloud_object_options.h>
+#include <PCCD/Surface/Euclidean_distance.h>
+#include <PCCD/Surface/Gaussian_weight.h>
+#include <PCCD/Surface/Geodesic_distance.h>
+#include <PCCD/Surface/Surface_fit.h>
+#include <PCCD/Surface/WLS_surface.h>
+#include <PCCD/Surface/bandwidth.h>
+#include <PCCD/Surface/estimate_normals.h>
+#include <PCCD/Surface/local_spacing.h>
+#include <PCCD/Surface/orient_normals.h>
+#include <PCCD/Surface/outliers.h>
+#include <PCCD/Surface/surface_domain.h>
+#include <PCCD/make_point_cloud_object.h>
+
+// Hierarchy and intersection queries
+#include <PCCD/Hierarchy/Point_cloud_hierarchy.h>
+#include <PCCD/Hierarchy/overlapping_leaves.h>
+#include <PCCD/Intersection/Interpolation_search.h>
+#include <PCCD/Intersection/Intersection_options.h>
+#include <PCCD/Intersection/Intersection_result.h>
+#include <PCCD/Intersection/Randomized_sampling.h>
+#include <PCCD/Intersection/do_intersect.h>
+#include <PCCD/Intersection/refinement.h>
+
+// Kinetic AABB trees
+#include <PCCD/Kinetic/Cubic.h>
+#include <PCCD/Kinetic/Event_queue.h>
+#include <PCCD/Kinetic/Kinetic_AABB_tree.h>
+#include <PCCD/Kinetic/Kinetic_primitives.h>
+#include <PCCD/Kinetic/Kinetic_ray.h>
+#include <PCCD/Kinetic/Kinetic_statistics.h>
+#include <PCCD/Kinetic/Linear_flightplan.h>
+#include <PCCD/Kinetic/Piecewise_linear_flightplan.h>
+#include <PCCD/Kinetic/Polynomial_flightplan.h>
+#include <PCCD/Kinetic/Refit_AABB_tree.h>
+#include <PCCD/Kinetic/boxes_overlap.h>
+#include <PCCD/Kinetic/intersect_ray_triangle.h>
+#include <PCCD/Kinetic/next_crossing.h>
