@@ -73,12 +73,15 @@
 
 // Hierarchy and intersection queries
 #include <PCCD/Hierarchy/Point_cloud_hierarchy.h>
+#include <PCCD/Hierarchy/Sphere_covering.h>
 #include <PCCD/Hierarchy/overlapping_leaves.h>
+#include <PCCD/Hierarchy/reach_traversal.h>
 #include <PCCD/Intersection/Interpolation_search.h>
 #include <PCCD/Intersection/Intersection_options.h>
 #include <PCCD/Intersection/Intersection_result.h>
 #include <PCCD/Intersection/Randomized_sampling.h>
 #include <PCCD/Intersection/do_intersect.h>
+#include <PCCD/Intersection/do_intersect_many.h>
 #include <PCCD/Intersection/refinement.h>
 
 // Kinetic AABB trees

@@ -17,10 +17,10 @@ enum class Intersection_point_kind : std::uint8_t {
     /// An approximate intersection point (AIP, doc/manual/intersection.md): on the graph edge of one
     /// cloud where the other surface's f changes sign, linearly interpolated between its two ends.
     approximate = 0,
-    /// Refined (section 6.3) or verified: a point where both |f_A| and |f_B| are below the refinement
+    /// Refined (doc/algorithms.md, "Refinement") or verified: a point where both |f_A| and |f_B| are below the refinement
     /// (or verification) tolerance, inside both surfaces' domains.
     refined = 1,
-    /// Randomized sampling (section 5): a sample where both |f_A| and |f_B| are below epsilon.
+    /// Randomized sampling (doc/algorithms.md, "Randomized sampling"): a sample where both |f_A| and |f_B| are below epsilon.
     sampled = 2,
 };
 

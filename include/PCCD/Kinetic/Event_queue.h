@@ -1,5 +1,5 @@
 // PCCD/Kinetic/Event_queue.h -- the priority queue of certificate failure times of the kinetic AABB
-// tree (ALGORITHMS.md section 7): an indexed d-ary min-heap over a fixed set of certificate ids with
+// tree (doc/algorithms.md, "Kinetic AABB tree"): an indexed d-ary min-heap over a fixed set of certificate ids with
 // insert, decrease-key, increase-key and removal by id, all in O(log n).
 //
 // Keys are (time, id), compared lexicographically, so simultaneous events come out in a fixed order

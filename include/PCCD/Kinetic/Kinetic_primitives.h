@@ -1,5 +1,5 @@
 // PCCD/Kinetic/Kinetic_primitives.h -- the KineticPrimitive models PCCD ships: a point of a
-// deforming point cloud and a triangle of a deforming polygon soup (ALGORITHMS.md section 7: "any
+// deforming point cloud and a triangle of a deforming polygon soup (doc/algorithms.md, "Kinetic AABB tree": "any
 // static AABB tree ... over the primitives (points, triangles, ...)").
 #pragma once
 

@@ -1,5 +1,5 @@
 // PCCD/Kinetic/internal/Primitive_slots.h -- the primitive bookkeeping shared by Kinetic_AABB_tree
-// and Refit_AABB_tree (ALGORITHMS.md section 7: "insertions and deletions at run time"): primitives
+// and Refit_AABB_tree (doc/algorithms.md, "Kinetic AABB tree": "insertions and deletions at run time"): primitives
 // live in indexed slots; removing one frees its slot, and the next insertion reuses the most
 // recently freed slot, so indices stay small and stable.
 #pragma once

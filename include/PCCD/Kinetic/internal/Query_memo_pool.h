@@ -1,5 +1,5 @@
 // PCCD/Kinetic/internal/Query_memo_pool.h -- the memo tables through which the kinetic AABB tree's
-// queries read vertex positions and node boxes at the query time (ALGORITHMS.md section 7: "the box
+// queries read vertex positions and node boxes at the query time (doc/algorithms.md, "Kinetic AABB tree": "the box
 // at time t is read off those vertices' positions"), kept for reuse between queries.
 //
 // A query needs one position per vertex and one box per node, each computed at most once. Fresh
