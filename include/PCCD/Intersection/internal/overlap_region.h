@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <optional>
 #include <cstddef>
 #include <cstdint>
 #include <unordered_map>
@@ -143,44 +144,47 @@ private:
     std::unordered_map<std::uint32_t, std::uint32_t> m_swapped;
 };
 
-/// Draws the points of s in the region (points whose position, mapped into t's frame, lies in a
-/// leaf box of t grown by `margin`) one at a time, uniformly at random without replacement.
+/// Draws the points of a region of a cloud s one at a time, uniformly at random without
+/// replacement, in two phases that keep a first-hit query cheap when the objects overlap deeply and
+/// exact when they barely touch: first, rejection sampling from all of s, testing each drawn point
+/// against the region (O(log N) each); once fewer than one draw in 16 lands in the region (after
+/// 128 draws), the region is enumerated, minus the points already drawn, and drawn from that list.
+/// Both phases draw uniformly from the region points not yet drawn, so the sequence is a uniform
+/// random permutation of the region either way.
 ///
-/// Two phases keep a first-hit query cheap when the objects overlap deeply and exact when they barely
-/// touch: first, rejection sampling from all of s, testing each drawn point against t's hierarchy
-/// (O(log N) each); once fewer than one draw in 16 lands in the region (after 128 draws), the
-/// region is enumerated through the overlapping leaf pairs, minus the points already drawn, and
-/// drawn from that list. Both phases draw uniformly from the region points not yet drawn, so the
-/// sequence is a uniform random permutation of the region either way.
-template <class Position>
-class Region_sampler {
+/// `Region` provides: size() (the points of s, drawn as k in [0, size)); id(k) (the cloud index of
+/// the k-th); contains(k); enumerate(counters) (the cloud indices of all region points);
+/// eager(counters) (the whole region at once when it is cheap to know, e.g. empty, else nullopt).
+template <class Region>
+class Two_phase_sampler {
 public:
-    Region_sampler(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t, const Rigid_transform_3<double>& s_to_t,
-                   double margin, Overlap_region region, const Position& position, Intersection_counters& counters)
-        : m_s(&s), m_t(&t), m_s_to_t(s_to_t), m_margin(margin), m_region(region), m_position(position),
-          m_counters(&counters), m_size(s.size()), m_permutation(s.size())
+    Two_phase_sampler(Region region, Intersection_counters& counters)
+        : m_region(std::move(region)), m_counters(&counters), m_size(m_region.size()), m_permutation(m_size)
     {
-        // A pair of disjoint objects needs no draws at all.
-        m_empty = !boxes_may_overlap(s.root().box, s_to_t, t.root().box, margin);
-        ++counters.node_pairs;
+        if (std::optional<std::vector<std::uint32_t>> list = m_region.eager(counters)) {
+            m_enumerated = true;
+            m_list = std::move(*list);
+            m_counters->candidate_points += m_list.size();
+        }
     }
 
-    /// The next region point, or false when the region is exhausted.
+    /// The next region point (an index of s's cloud), or false when the region is exhausted.
     bool next(Random_engine& engine, std::uint32_t& point)
     {
-        if (m_empty) return false;
         while (!m_enumerated) {
             if (m_drawn == m_size) return false;
             if (m_drawn >= 128 && 16 * m_accepted < m_drawn) {
                 enumerate();
                 break;
             }
-            const std::uint32_t p = draw_from_all(engine);
-            const Eigen::Vector3d q = m_s_to_t.transform_point(m_position(p));
-            if (in_region(*m_t, 0, q, m_margin, m_region)) {
+            const std::uint32_t k = m_permutation.next(engine);
+            ++m_drawn;
+            const std::uint32_t id = m_region.id(k);
+            m_drawn_points.push_back(id);
+            if (m_region.contains(k)) {
                 ++m_accepted;
                 ++m_counters->candidate_points;
-                point = p;
+                point = id;
                 return true;
             }
         }
@@ -195,49 +199,73 @@ public:
     /// otherwise an estimate from the acceptance rate so far.
     double region_size() const
     {
-        if (m_empty) return 0.0;
         if (m_enumerated) return double(m_accepted + m_list.size());
         if (m_drawn == 0) return double(m_size);
         return double(m_size) * double(m_accepted) / double(m_drawn);
     }
     /// True when region_size() is exact.
-    bool region_size_known() const { return m_empty || m_enumerated || m_drawn == m_size; }
+    bool region_size_known() const { return m_enumerated || m_drawn == m_size; }
     std::size_t accepted() const { return m_accepted + (m_enumerated ? m_next : 0); }
 
 private:
-    std::uint32_t draw_from_all(Random_engine& engine)
-    {
-        const std::uint32_t chosen = m_permutation.next(engine);
-        m_drawn_points.push_back(chosen);
-        ++m_drawn;
-        return chosen;
-    }
-
     void enumerate()
     {
         m_enumerated = true;
         std::sort(m_drawn_points.begin(), m_drawn_points.end());
-        m_list = region_points(*m_s, *m_t, m_s_to_t, m_margin, m_region, m_position, *m_counters);
+        m_list = m_region.enumerate(*m_counters);
         std::erase_if(m_list, [&](std::uint32_t p) {
             return std::binary_search(m_drawn_points.begin(), m_drawn_points.end(), p);
         });
         m_counters->candidate_points += m_list.size();
     }
 
-    const Point_cloud_hierarchy* m_s;
-    const Point_cloud_hierarchy* m_t;
-    Rigid_transform_3<double> m_s_to_t;
-    double m_margin;
-    Overlap_region m_region;
-    Position m_position;
+    Region m_region;
     Intersection_counters* m_counters;
     std::size_t m_size;
-    bool m_empty = false;
+    Sparse_permutation m_permutation;
     bool m_enumerated = false;
     std::size_t m_drawn = 0, m_accepted = 0, m_next = 0;
-    Sparse_permutation m_permutation;
     std::vector<std::uint32_t> m_drawn_points;
     std::vector<std::uint32_t> m_list;
+};
+
+/// The flat traversal's region: the points of s whose position, mapped into t's frame, lies in a
+/// leaf box of t (or its root box, Overlap_region::object_boxes) grown by `margin`.
+template <class Position>
+struct Box_region {
+    const Point_cloud_hierarchy* s;
+    const Point_cloud_hierarchy* t;
+    Rigid_transform_3<double> s_to_t;
+    double margin;
+    Overlap_region region;
+    Position position;
+
+    std::size_t size() const { return s->size(); }
+    std::uint32_t id(std::uint32_t k) const { return k; }
+    bool contains(std::uint32_t k) const { return in_region(*t, 0, s_to_t.transform_point(position(k)), margin, region); }
+    std::vector<std::uint32_t> enumerate(Intersection_counters& counters) const
+    {
+        return region_points(*s, *t, s_to_t, margin, region, position, counters);
+    }
+    /// A pair of disjoint objects needs no draws at all.
+    std::optional<std::vector<std::uint32_t>> eager(Intersection_counters& counters) const
+    {
+        ++counters.node_pairs;
+        if (!boxes_may_overlap(s->root().box, s_to_t, t->root().box, margin)) return std::vector<std::uint32_t>{};
+        return std::nullopt;
+    }
+};
+
+/// Draws the points of s in the flat traversal's region (Box_region) uniformly at random without
+/// replacement (Two_phase_sampler).
+template <class Position>
+class Region_sampler : public Two_phase_sampler<Box_region<Position>> {
+public:
+    Region_sampler(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t, const Rigid_transform_3<double>& s_to_t,
+                   double margin, Overlap_region region, const Position& position, Intersection_counters& counters)
+        : Two_phase_sampler<Box_region<Position>>(Box_region<Position>{&s, &t, s_to_t, margin, region, position}, counters)
+    {
+    }
 };
 
 /// A box of the randomized sampling, in t's frame, and its volume.
