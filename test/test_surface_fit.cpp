@@ -161,7 +161,7 @@ TEST_CASE("on noisy curved samples the sphere fit's zero set is closer to the su
     }
 }
 
-TEST_CASE("Point_cloud_object fits spheres by default; an unknown fit is refused", "[surface]")
+TEST_CASE("Point_cloud_object fits spheres by default, and an unknown fit is refused", "[surface]")
 {
     const auto sample = sample_shape(unit_sphere(), 500, 0.0, 61);
     const PCCD::Point_cloud_object<> object(columns(sample.points));

@@ -106,7 +106,7 @@ TEST_CASE("Objects whose reaches cannot meet are separate without an f evaluatio
     CHECK_FALSE(PCCD::do_intersect(s.a, identity, s.b, apart, {.traversal = PCCD::Traversal::flat}).intersects);
 }
 
-TEST_CASE("Growing budgets never lose a contact; a spent budget is undecided, never separate", "[hierarchy]")
+TEST_CASE("Growing budgets never lose a contact, and a spent budget is undecided, never separate", "[hierarchy]")
 {
     const Spheres& s = spheres();
     const std::vector<Pose> ps = poses(40, 9);
