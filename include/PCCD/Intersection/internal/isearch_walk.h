@@ -58,10 +58,9 @@ inline bool probe(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t
 /// Samples, in `role`, the points of leaf `ls` of s within the reach of leaf `lt` of t that the
 /// role has not sampled yet, up to `cap` samples. Returns false when the query must stop.
 template <class Role_type>
-bool sample_leaf(const Point_cloud_hierarchy& s, Point_cloud_hierarchy::Index ls,
-                        const Point_cloud_hierarchy& t, Point_cloud_hierarchy::Index lt, const Reach_rule& rule_t,
-                        std::size_t cap, std::unordered_set<std::uint32_t>& done, Covering_grid& cover,
-                        Role_type& role)
+bool sample_leaf(const Point_cloud_hierarchy& s, Point_cloud_hierarchy::Index ls, const Point_cloud_hierarchy& t,
+                 Point_cloud_hierarchy::Index lt, const Reach_rule& rule_t, std::size_t cap,
+                 std::unordered_set<std::uint32_t>& done, Covering_grid& cover, Role_type& role)
 {
     const auto& ns = s.node(ls);
     const auto& nt = t.node(lt);
