@@ -148,3 +148,16 @@ TEST_CASE("A time budget that runs out first gives undecided", "[hierarchy]")
     CHECK_THROWS_WITH(PCCD::do_intersect(s.a, identity, s.b, near, {.traversal = PCCD::Traversal(9)}),
                       Catch::Matchers::Contains("unknown traversal"));
 }
+
+TEST_CASE("Objects already in one frame need no poses", "[intersection]")
+{
+    const Spheres& s = spheres();
+    const Rigid_transform_3<double> identity(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero());
+    // Two unit spheres at the same centre: coincident surfaces, reported intersecting.
+    const auto posed = PCCD::do_intersect(s.a, identity, s.b, identity, {.seed = 3});
+    const auto plain = PCCD::do_intersect(s.a, s.b, {.seed = 3});
+    CHECK(plain.intersects == posed.intersects);
+    CHECK(plain.counters == posed.counters);
+    const auto curve = PCCD::intersection_points(s.a, s.b, {.seed = 3});
+    CHECK(curve.counters == PCCD::intersection_points(s.a, identity, s.b, identity, {.seed = 3}).counters);
+}

@@ -147,4 +147,24 @@ Intersection_result intersection_points(const A& a, const Rigid_transform_3<doub
     return internal::run_query(a, pose_a, b, pose_b, options, policy, false, "intersection_points");
 }
 
+/// do_intersect() for two objects already in one frame (both at the identity pose).
+template <CollisionObject A, CollisionObject B, class Policy = Interpolation_search>
+    requires LeafIntersector<Policy, A, B>
+Intersection_result do_intersect(const A& a, const B& b, const Intersection_options& options = {},
+                                 const Policy& policy = Policy())
+{
+    const Rigid_transform_3<double> identity;
+    return internal::run_query(a, identity, b, identity, options, policy, true, "do_intersect");
+}
+
+/// intersection_points() for two objects already in one frame (both at the identity pose).
+template <CollisionObject A, CollisionObject B, class Policy = Interpolation_search>
+    requires LeafIntersector<Policy, A, B>
+Intersection_result intersection_points(const A& a, const B& b, const Intersection_options& options = {},
+                                        const Policy& policy = Policy())
+{
+    const Rigid_transform_3<double> identity;
+    return internal::run_query(a, identity, b, identity, options, policy, false, "intersection_points");
+}
+
 } // namespace PCCD
