@@ -240,7 +240,7 @@ TEST_CASE("The renderer rejects bad input with clear errors", "[render]")
 {
     CHECK_THROWS_WITH(pccd_render::parse_view("sideways"), Catch::Contains("AZIMUTH,ELEVATION"));
     CHECK_THROWS_WITH(pccd_render::parse_view("30,91"), Catch::Contains("[-90, 90]"));
-    CHECK_THROWS_WITH(pccd_render::parse_view("x,20"), Catch::Contains("not a number"));
+    CHECK_THROWS_WITH(pccd_render::parse_view("x,20"), Catch::Contains("not a finite number"));
     CHECK(pccd_render::parse_view("top").elevation == 90.0);
     CHECK(pccd_render::parse_view("12.5,-30").azimuth == 12.5);
     CHECK_THROWS_WITH(pccd_render::parse_size("800"), Catch::Contains("WIDTHxHEIGHT"));

@@ -6,6 +6,7 @@
 // mean f evaluations.
 #include "commands.h"
 #include "intersection_support.h"
+#include "parse_number.h"
 
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Random.h>
@@ -41,16 +42,7 @@ struct Bench_options {
 
 double parse_distance(const std::string& text, const std::string& spec)
 {
-    std::size_t used = 0;
-    double value = 0.0;
-    try {
-        value = std::stod(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used == 0 || used != text.size() || !std::isfinite(value))
-        throw PCCD::Invalid_input("--distances \"" + spec + "\": \"" + text + "\" is not a finite number");
-    return value;
+    return parse_finite_number(text, "--distances \"" + spec + "\"");
 }
 
 /// "start:stop:step" (stop included within rounding), a single distance, or a comma-separated list.

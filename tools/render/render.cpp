@@ -1,6 +1,8 @@
 // tools/render/render.cpp -- the splat renderer of tools/render/render.h.
 #include "render.h"
 
+#include "../parse_number.h"
+
 #include <Eigen/Geometry>
 
 #include <PCCD/Error.h>
@@ -98,16 +100,7 @@ Camera oriented_camera(const View& view)
 
 double parse_double(const std::string& text, const std::string& what)
 {
-    std::size_t used = 0;
-    double value = 0.0;
-    try {
-        value = std::stod(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used == 0 || used != text.size() || !std::isfinite(value))
-        throw PCCD::Invalid_input(what + ": \"" + text + "\" is not a number");
-    return value;
+    return pccd_tool::parse_finite_number(text, what);
 }
 
 } // namespace
