@@ -2,8 +2,9 @@
 // intersection_points_many() answer a list of (object, pose, object, pose) pairs, in parallel on TBB
 // when it is available, with the results in the order of the pairs and bit for bit those of the
 // sequential calls, whatever the number of threads. Each pair gets its own seed, derived from the
-// options' seed and the pair's index by pair_seed(). Implements doc/manual/intersection.md, "Many
-// pairs at once".
+// options' seed and the pair's index by pair_seed() (a time budget, Intersection_options::max_time_us,
+// makes answers depend on timing, and then on the thread count). Implements
+// doc/manual/intersection.md, "Many pairs at once".
 #pragma once
 
 #include <cstddef>
