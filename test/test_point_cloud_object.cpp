@@ -171,3 +171,17 @@ TEST_CASE("a point cloud object takes a file's normals as hints: zero or NaN nor
         CHECK(*object.surface().value(Eigen::Vector3d(0.0, 0.0, 1.05)) < 0.0);
     }
 }
+
+TEST_CASE("A thread count beyond what TBB can take is refused with a message, not a crash", "[surface][robustness]")
+{
+    const auto sample = pccd_test::sample_shape(pccd_test::unit_sphere(), 300, 0.0, 1);
+    PCCD::Point_cloud_object_options options;
+    options.threads = 1u << 20; // TBB's task_arena crashed on about 2^18
+    CHECK_THROWS_WITH(PCCD::Point_cloud_object<>(pccd_test::columns(sample.points),
+                                                 PCCD::Identity_point_map<Eigen::Vector3d>(), options),
+                      Catch::Contains("threads = 1048576 exceeds"));
+    options.threads = PCCD::internal::max_worker_threads; // the largest accepted value still works
+    CHECK(PCCD::Point_cloud_object<>(pccd_test::columns(sample.points), PCCD::Identity_point_map<Eigen::Vector3d>(),
+                                     options)
+              .size() == 300);
+}

@@ -39,7 +39,7 @@ struct Posed_pair {
 struct Batch_options {
     /// The largest `threads` accepted: TBB crashes when asked for an arena of a few hundred thousand
     /// threads, so absurd requests are refused with Invalid_input instead.
-    static constexpr unsigned max_threads = 4096;
+    static constexpr unsigned max_threads = internal::max_worker_threads;
     /// Worker threads, at most max_threads; 0 (default) uses all available. Ignored without TBB
     /// (the pairs are then answered one after the other).
     unsigned threads = 0;

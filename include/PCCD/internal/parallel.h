@@ -9,6 +9,8 @@
 #include <cstddef>
 #include <utility>
 
+#include <PCCD/Error.h>
+
 #ifdef PCCD_HAS_TBB
 #include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/enumerable_thread_specific.h>
@@ -19,10 +21,18 @@
 
 namespace PCCD::internal {
 
+/// The most worker threads any option may ask for. TBB's arenas crash (rather than refuse) when
+/// asked for hundreds of thousands of threads, so larger requests are rejected with a message.
+inline constexpr unsigned max_worker_threads = 4096;
+
 /// Runs `body()` with at most `threads` worker threads (0: all available).
+/// \throws Invalid_input if threads > max_worker_threads.
 template <class Body>
 void with_threads(unsigned threads, Body&& body)
 {
+    if (threads > max_worker_threads)
+        throw Invalid_input(concat("threads = ", threads, " exceeds the supported maximum of ", max_worker_threads,
+                                   " worker threads (0 uses all available)"));
 #ifdef PCCD_HAS_TBB
     if (threads == 0) {
         body();
