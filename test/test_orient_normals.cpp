@@ -123,7 +123,8 @@ TEST_CASE("orientation like given normals follows them and fills undetermined no
     const PCCD::Point_cloud_object<> object(items, Index_map{&points}, Index_map{&given});
     CHECK(object.normals_given());
     CHECK(object.orientation().components == 0);
-    for (Eigen::Index i = 0; i < sample.normals.cols(); ++i) CHECK(object.normals().col(i).dot(sample.normals.col(i)) < 0.0);
+    for (Eigen::Index i = 0; i < sample.normals.cols(); ++i)
+        CHECK(object.normals().col(i).dot(sample.normals.col(object.input_index(std::size_t(i)))) < 0.0);
     const double s = object.cloud().mean_spacing();
     const Eigen::Vector3d outside(1.4 + s, 0.0, 0.0); // s outside the outer equator
     REQUIRE(object.surface().value(outside).has_value());
@@ -149,16 +150,20 @@ TEST_CASE("oriented normals of the bunny scan agree with its mesh normals", "[su
         PCCD::graph_components(object.graph().graph(), object.graph().virtual_map());
     // Per component, the global sign that agrees best; count the normals that disagree with it
     // (or have none). Vertices used by no face have no mesh normal and are not counted.
+    // Point i of the object is vertex input_index(i) of the mesh.
     std::vector<double> vote(components.count, 0.0);
-    for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
-        if (!mesh_normals[i].isZero(0.0))
-            vote[components.label[i]] += object.normals().col(Eigen::Index(i)).dot(mesh_normals[i].normalized()) > 0.0 ? 1 : -1;
+    for (std::size_t i = 0; i < object.size(); ++i) {
+        const Eigen::Vector3d& mesh_normal = mesh_normals[object.input_index(i)];
+        if (!mesh_normal.isZero(0.0))
+            vote[components.label[i]] += object.normals().col(Eigen::Index(i)).dot(mesh_normal.normalized()) > 0.0 ? 1 : -1;
+    }
     std::size_t counted = 0, agree = 0;
-    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-        if (mesh_normals[i].isZero(0.0)) continue;
+    for (std::size_t i = 0; i < object.size(); ++i) {
+        const Eigen::Vector3d& mesh_normal = mesh_normals[object.input_index(i)];
+        if (mesh_normal.isZero(0.0)) continue;
         ++counted;
         const double sign = vote[components.label[i]] >= 0.0 ? 1.0 : -1.0;
-        if (sign * object.normals().col(Eigen::Index(i)).dot(mesh_normals[i]) > 0.0) ++agree;
+        if (sign * object.normals().col(Eigen::Index(i)).dot(mesh_normal) > 0.0) ++agree;
     }
     const double fraction = double(agree) / double(counted);
     INFO("bunny: " << agree << " of " << counted << " normals agree (" << 100.0 * fraction << " %), "

@@ -115,7 +115,7 @@ TEST_CASE("a point cloud object from a point file's data uses its normals when i
     CHECK(oriented.normals_given());
     std::size_t inward = 0;
     for (Eigen::Index i = 0; i < oriented.normals().cols(); ++i)
-        inward += oriented.normals().col(i).dot(data.points[std::size_t(i)]) < 0.0;
+        inward += oriented.normals().col(i).dot(data.points[oriented.input_index(std::size_t(i))]) < 0.0;
     CHECK(inward == data.points.size());
     // Normals, but not one per point.
     data.normals.pop_back();
@@ -162,7 +162,7 @@ TEST_CASE("a point cloud object takes a file's normals as hints: zero or NaN nor
         CHECK(object.orientation().unoriented == 0);
         std::size_t inward = 0;
         for (Eigen::Index i = 0; i < object.normals().cols(); ++i)
-            inward += object.normals().col(i).dot(data.points[std::size_t(i)]) < 0.0;
+            inward += object.normals().col(i).dot(data.points[object.input_index(std::size_t(i))]) < 0.0;
         CHECK(inward == data.points.size());
         // f has the sign the hints chose: positive inside the sphere, negative outside.
         REQUIRE(object.surface().value(Eigen::Vector3d(0.0, 0.0, 0.95)).has_value());
@@ -184,4 +184,65 @@ TEST_CASE("A thread count beyond what TBB can take is refused with a message, no
     CHECK(PCCD::Point_cloud_object<>(pccd_test::columns(sample.points), PCCD::Identity_point_map<Eigen::Vector3d>(),
                                      options)
               .size() == 300);
+}
+
+TEST_CASE("Point_cloud_object stores its points in spatial order and maps them back", "[surface]")
+{
+    // A sample in random order (the samplers draw points independently), plus two stray points.
+    const auto sample = sample_shape(unit_sphere(), 3000, 0.0, 77);
+    std::vector<Eigen::Vector3d> given = columns(sample.points);
+    given.insert(given.begin() + 1000, Eigen::Vector3d(40.0, 0.0, 0.0));
+    given.push_back(Eigen::Vector3d(0.0, -40.0, 0.0));
+    // One bandwidth for both: the automatic one rests on r(P), a Monte-Carlo estimate whose random
+    // draws are point indices, and so differs (by about 1 %) between two orders of the points.
+    const PCCD::Bandwidth_options bandwidth{.bandwidth = 0.08};
+    const PCCD::Point_cloud_object<> object(given, PCCD::Identity_point_map<Eigen::Vector3d>(), {.bandwidth = bandwidth});
+    const PCCD::Point_cloud_object<> unordered(given, PCCD::Identity_point_map<Eigen::Vector3d>(),
+                                               {.bandwidth = bandwidth, .spatial_order = false});
+    // The outliers are named by their index among the points given, in both.
+    CHECK(object.scan().outliers == std::vector<std::uint32_t>{1000, 3001});
+    CHECK(unordered.scan().outliers == object.scan().outliers);
+    REQUIRE(object.size() == 3000);
+    // input_index is a bijection onto the points kept, and each point is the one given.
+    std::vector<bool> seen(given.size(), false);
+    for (std::size_t i = 0; i < object.size(); ++i) {
+        const std::uint32_t k = object.input_index(i);
+        REQUIRE(k < given.size());
+        CHECK_FALSE(seen[k]);
+        seen[k] = true;
+        CHECK(object.cloud().position(std::uint32_t(i)) == given[k]);
+        CHECK(unordered.cloud().position(unordered.input_index(i)) != Eigen::Vector3d(40.0, 0.0, 0.0));
+    }
+    CHECK_FALSE(seen[1000]);
+    CHECK_FALSE(seen[3001]);
+    // Without the spatial order the points keep the order given (less the outliers).
+    for (std::size_t i = 0; i < unordered.size(); ++i) CHECK(unordered.input_index(i) == (i < 1000 ? i : i + 1));
+    // Spatial order: consecutive points are near (here 12x nearer on average than in the order given).
+    auto mean_step = [](const PCCD::Point_cloud_object<>& o) {
+        double sum = 0.0;
+        for (std::uint32_t i = 1; i < o.size(); ++i) sum += (o.cloud().position(i) - o.cloud().position(i - 1)).norm();
+        return sum / double(o.size() - 1);
+    };
+    INFO("mean step: spatial " << mean_step(object) << ", given " << mean_step(unordered));
+    CHECK(mean_step(object) < 0.2 * mean_step(unordered));
+    // The surface does not depend on the order of the points: same f (up to the rounding of sums in
+    // another order) and normals at random points near the sphere.
+    PCCD::Random_engine engine(5);
+    for (int k = 0; k < 200; ++k) {
+        const Eigen::Vector3d direction(PCCD::uniform_real(engine, -1, 1), PCCD::uniform_real(engine, -1, 1),
+                                        PCCD::uniform_real(engine, -1, 1));
+        const Eigen::Vector3d x = direction.normalized() * PCCD::uniform_real(engine, 0.95, 1.05);
+        const auto e = object.surface().evaluate(x), u = unordered.surface().evaluate(x);
+        REQUIRE(e.status == u.status);
+        if (!e.defined()) continue;
+        CHECK(e.value == Approx(u.value).margin(1e-12));
+        CHECK(e.normal.dot(u.normal) > 1.0 - 1e-9);
+        CHECK(object.input_index(e.nearest) == unordered.input_index(u.nearest));
+    }
+    // save() and load() keep the map.
+    const std::string path = std::string(PCCD_TEST_TMP_DIR) + "/spatial_order.pccd";
+    object.save(path);
+    const auto loaded = PCCD::Point_cloud_object<>::load(path);
+    CHECK(loaded.input_indices() == object.input_indices());
+    CHECK(loaded.scan().outliers == object.scan().outliers);
 }

@@ -741,8 +741,9 @@ TEST_CASE("verified contacts lie within the contact core of both domains", "[sur
         for (const auto& p : result.points) {
             const Eigen::Vector3d in_a = p.position, in_b = pose_b.inverse().transform_point(p.position);
             Eigen::Index ia = 0, ib = 0;
-            const double da = std::sqrt((sa.points.colwise() - in_a).colwise().squaredNorm().minCoeff(&ia));
-            const double db = std::sqrt((sb.points.colwise() - in_b).colwise().squaredNorm().minCoeff(&ib));
+            // The objects' own points: their domain radii are in the objects' (spatial) order.
+            const double da = std::sqrt((a.cloud().coordinates().colwise() - in_a).colwise().squaredNorm().minCoeff(&ia));
+            const double db = std::sqrt((b.cloud().coordinates().colwise() - in_b).colwise().squaredNorm().minCoeff(&ib));
             CHECK(da <= core * a.domain_radii()(ia) * (1.0 + 1e-9));
             CHECK(db <= core * b.domain_radii()(ib) * (1.0 + 1e-9));
         }

@@ -88,13 +88,13 @@ TEST_CASE("thin sheets: the Euclidean kernel bleeds across the gap, the geodesic
         for (std::size_t p = 0; p + 1 < rows.size(); ++p)
             for (auto e = rows[p]; e < rows[p + 1]; ++e)
                 if (!object.graph().edge_property(e).is_virtual &&
-                    std::abs(sample.points(2, Eigen::Index(p)) - sample.points(2, Eigen::Index(targets[e]))) > gap / 2)
+                    std::abs(object.cloud().position(std::uint32_t(p)).z() - object.cloud().position(targets[e]).z()) > gap / 2)
                     ++crossing;
         REQUIRE(crossing == 0);
         // Normals face outward: sheet 0 down, sheet 1 up.
         std::size_t inward = 0;
         for (Eigen::Index i = 0; i < sample.normals.cols(); ++i)
-            if (object.normals().col(i).dot(sample.normals.col(i)) <= 0.0) ++inward;
+            if (object.normals().col(i).dot(sample.normals.col(object.input_index(std::size_t(i)))) <= 0.0) ++inward;
         CHECK(inward == 0);
 
         // Middle band: points within 0.5 R .. R of both sheets' planes... i.e. |z - gap / 2| <= R / 4,

@@ -85,7 +85,8 @@ Errors errors(const Surface& surface, const std::vector<Query>& queries, double 
 double orientation_sign(const Object& object, const PCCD::Surface_sample& sample)
 {
     double agreement = 0.0;
-    for (Eigen::Index i = 0; i < sample.normals.cols(); ++i) agreement += object.normals().col(i).dot(sample.normals.col(i));
+    for (Eigen::Index i = 0; i < sample.normals.cols(); ++i)
+        agreement += object.normals().col(i).dot(sample.normals.col(object.input_index(std::size_t(i))));
     return agreement >= 0.0 ? 1.0 : -1.0;
 }
 
@@ -175,7 +176,7 @@ TEST_CASE("after orientation f is positive outside closed shapes and negative in
             // Every stored normal points outward: the orientation found the outside.
             std::size_t inward = 0;
             for (Eigen::Index i = 0; i < sample.points.cols(); ++i)
-                if (object.normals().col(i).dot(sample.normals.col(i)) < 0.0) ++inward;
+                if (object.normals().col(i).dot(sample.normals.col(object.input_index(std::size_t(i)))) < 0.0) ++inward;
             CHECK(inward == 0);
             // Points whose own fit is undetermined (isolated in the graph) carry no normal: rare.
             CHECK(object.orientation().unoriented <= 10);
@@ -341,7 +342,7 @@ TEST_CASE("evaluation agrees with a brute-force evaluation of the definition", "
         options.surface_fit = fit;
         const Object object(columns(sample.points), identity, options);
         const Eigen::Matrix3Xd* normals = fit == PCCD::Surface_fit::sphere ? &object.normals() : nullptr;
-        const Eigen::Matrix3Xd& P = sample.points;
+        const Eigen::Matrix3Xd& P = object.cloud().coordinates(); // in the object's order, as its normals
         const double h = object.bandwidth(), R = object.weight().support_radius();
         const double s = object.cloud().mean_spacing();
         // Geodesic truth: full Dijkstra over the graph (non-virtual edges) from the brute-force nearest.
@@ -387,7 +388,7 @@ TEST_CASE("evaluation at a cloud point by index equals evaluation at its positio
     std::vector<Eigen::Vector3d> positions;
     for (std::uint32_t i = 0; i < 3000; i += 7) {
         indices.push_back(i);
-        positions.push_back(sample.points.col(i));
+        positions.push_back(object.cloud().position(i));
     }
     std::vector<PCCD::Surface_evaluation> by_index(indices.size()), by_position(indices.size());
     object.surface().evaluate_at(indices, by_index);

@@ -176,7 +176,7 @@ void run_collide(const Collide_options& o)
     r["status"] = PCCD::to_string(t.result.status);
     r["points"] = t.result.points.size();
     add_counters(r, t.result.counters);
-    if (o.method == PCCD::Randomized_sampling::name()) r["closest_estimate"] = t.result.closest_estimate; // inf: null
+    r["closest_estimate"] = t.result.closest_estimate; // inf: null
     r["query_us"] = t.query_us;
     r["preprocess_ms"] = preprocess_ms;
     if (!t.result.points.empty()) {

@@ -71,6 +71,18 @@ public:
     }
     /// @}
 
+    /// The checked 3 x N coordinates of the points of `items` (through `point_map`), in their order,
+    /// as the constructor from a range reads them but without building the kd-tree: for callers
+    /// that reorder the points first.
+    /// \throws Invalid_input as the constructors.
+    template <std::ranges::input_range Range,
+              class PointMap = Identity_point_map<std::ranges::range_value_t<Range>>>
+        requires ReadablePointMap<PointMap, std::ranges::range_value_t<Range>>
+    static Coordinates read_coordinates(const Range& items, const PointMap& point_map = PointMap())
+    {
+        return checked(to_coordinates(items, point_map));
+    }
+
     /// The largest coordinate magnitude accepted, sqrt(max(FT)) / 4 (about 3.3e153 for double,
     /// 4.6e18 for float): beyond it squared distances could overflow.
     static FT max_coordinate_magnitude() { return std::sqrt(std::numeric_limits<FT>::max()) / FT(4); }

@@ -16,6 +16,7 @@
 #include <istream>
 #include <iterator>
 #include <memory>
+#include <numeric>
 #include <optional>
 #include <ranges>
 #include <sstream>
@@ -51,6 +52,7 @@
 #include <PCCD/concepts/PointCloudKernel.h>
 #include <PCCD/concepts/ReadablePointMap.h>
 #include <PCCD/internal/binary_stream.h>
+#include <PCCD/internal/spatial_order.h>
 #include <PCCD/sampling_radius.h>
 
 namespace PCCD {
@@ -80,7 +82,7 @@ public:
     using Euclidean_surface = WLS_surface<Euclidean_distance<K>, Gaussian_weight>;
 
     /// Version of the file format written by save().
-    static constexpr std::uint32_t file_version = 3;
+    static constexpr std::uint32_t file_version = 4;
 
     /// \name Construction
     /// @{
@@ -97,7 +99,7 @@ public:
         requires ReadablePointMap<PointMap, std::ranges::range_value_t<Range>>
     explicit Point_cloud_object(const Range& items, const PointMap& point_map = PointMap(),
                                 const Point_cloud_object_options& options = {})
-        : Point_cloud_object(timed_cloud(items, point_map), std::nullopt, options)
+        : Point_cloud_object(timed_cloud(items, point_map, options), std::nullopt, options)
     {
     }
 
@@ -113,7 +115,7 @@ public:
                  ReadablePointMap<NormalMap, std::ranges::range_value_t<Range>>
     Point_cloud_object(const Range& items, const PointMap& point_map, const NormalMap& normal_map,
                        const Point_cloud_object_options& options = {})
-        : Point_cloud_object(timed_cloud(items, point_map), read_normals(items, normal_map), options)
+        : Point_cloud_object(timed_cloud(items, point_map, options), read_normals(items, normal_map), options)
     {
     }
 
@@ -152,7 +154,20 @@ public:
 
     /// \name Preprocessed state
     /// @{
+    /// The points of the surface: those given, without the outliers (scan().outliers), in a spatial
+    /// order (Point_cloud_object_options::spatial_order) unless that was switched off. Every
+    /// per-point array of the object (normals(), domain_radii(), graph(), cpsp(), the indices of
+    /// the hierarchy) is in this order; input_index() finds a given point again.
     const Point_cloud<K>& cloud() const { return m_data->cloud; }
+    /// The index, among the points given to the constructor (or in the file it was read from), of
+    /// point `i` of cloud(). \pre i < size()
+    std::uint32_t input_index(std::size_t i) const
+    {
+        PCCD_precondition(i < size());
+        return m_data->input_index[i];
+    }
+    /// input_index() of every point of cloud(), in order (ascending when the points kept their order).
+    const std::vector<std::uint32_t>& input_indices() const { return m_data->input_index; }
     std::size_t size() const { return m_data->cloud.size(); }
     const Proximity_graph& graph() const { return *m_data->graph; }
     /// The bounding-volume hierarchy over the points (doc/manual/intersection.md).
@@ -199,11 +214,14 @@ private:
         Geodesic_surface geodesic;
         Euclidean_surface euclidean;
         Point_cloud_hierarchy hierarchy;
+        std::vector<std::uint32_t> input_index;
     };
 
     struct Timed_cloud {
         Point_cloud<K> cloud;
         double milliseconds;
+        /// input_index of each point of `cloud` (empty: the identity).
+        std::vector<std::uint32_t> input_index;
     };
 
     explicit Point_cloud_object(std::shared_ptr<const Data> data) : m_data(std::move(data)) {}
@@ -235,12 +253,23 @@ private:
         return Point_cloud_object(items, Row_map{&data.points}, Row_map{&data.normals}, options);
     }
 
+    /// The cloud of the given points (and its kd-tree), in spatial order when the options ask for it.
     template <class Range, class PointMap>
-    static Timed_cloud timed_cloud(const Range& items, const PointMap& point_map)
+    static Timed_cloud timed_cloud(const Range& items, const PointMap& point_map,
+                                   const Point_cloud_object_options& options)
     {
         const auto start = Clock::now();
-        Point_cloud<K> cloud(items, point_map);
-        return {std::move(cloud), ms_since(start)};
+        auto coordinates = Point_cloud<K>::read_coordinates(items, point_map);
+        std::vector<std::uint32_t> input_index;
+        if (options.spatial_order) {
+            input_index = internal::spatial_order(coordinates);
+            typename Point_cloud<K>::Coordinates sorted(3, coordinates.cols());
+            for (Eigen::Index i = 0; i < sorted.cols(); ++i)
+                sorted.col(i) = coordinates.col(Eigen::Index(input_index[std::size_t(i)]));
+            coordinates = std::move(sorted);
+        }
+        Point_cloud<K> cloud(std::move(coordinates));
+        return {std::move(cloud), ms_since(start), std::move(input_index)};
     }
 
     template <class Range, class NormalMap>
@@ -263,7 +292,7 @@ private:
                           const Gaussian_weight& weight, Eigen::Matrix3Xd normals, Eigen::VectorXd domain,
                           Orientation_report orientation, bool normals_given, Scan_estimate scan,
                           Preprocessing_times timings, const Point_cloud_hierarchy_options& hierarchy_options,
-                          Surface_fit fit)
+                          Surface_fit fit, std::vector<std::uint32_t> input_index)
     {
         // The hierarchy's reach of a point is its domain radius: f is defined only that close to it
         // (doc/manual/hierarchy.md). Without a domain the hierarchy has no reaches (queries walk it flat).
@@ -276,7 +305,7 @@ private:
         return Data{std::move(cloud),       std::move(graph),     std::move(cpsp),
                     sampling_radius,        orientation,          normals_given,
                     std::move(scan),        timings,              std::move(geodesic),
-                    std::move(euclidean),   std::move(hierarchy)};
+                    std::move(euclidean),   std::move(hierarchy), std::move(input_index)};
     }
 
     /// Removes the points `outliers` (ascending indices) of `cloud`, and their given normals, in place.
@@ -305,6 +334,25 @@ private:
         if (given_normals) given_normals = std::move(normals);
     }
 
+    /// Drops the entries `outliers` (ascending positions in the cloud) of `input_index`, and turns
+    /// `outliers` into the input indices of those points, ascending.
+    static void keep_input_indices(std::vector<std::uint32_t>& input_index, std::vector<std::uint32_t>& outliers)
+    {
+        if (outliers.empty()) return;
+        std::vector<std::uint32_t> kept;
+        kept.reserve(input_index.size() - outliers.size());
+        std::size_t skip = 0;
+        for (std::size_t i = 0; i < input_index.size(); ++i) {
+            if (skip < outliers.size() && outliers[skip] == i) {
+                outliers[skip++] = input_index[i];
+                continue;
+            }
+            kept.push_back(input_index[i]);
+        }
+        std::sort(outliers.begin(), outliers.end());
+        input_index = std::move(kept);
+    }
+
     static std::shared_ptr<const Data> preprocess(Timed_cloud built, std::optional<Eigen::Matrix3Xd> given_normals,
                                                   Point_cloud_object_options options)
     {
@@ -322,6 +370,18 @@ private:
         internal::check_outlier_options(options.outliers);
         internal::check_noise_factor(options.bandwidth);
 
+        // Point i of the cloud is point input_index[i] of those given; the normals given follow.
+        std::vector<std::uint32_t> input_index = std::move(built.input_index);
+        if (input_index.empty()) {
+            input_index.resize(cloud.size());
+            std::iota(input_index.begin(), input_index.end(), std::uint32_t(0));
+        } else if (given_normals) {
+            Eigen::Matrix3Xd ordered(3, given_normals->cols());
+            for (Eigen::Index i = 0; i < ordered.cols(); ++i)
+                ordered.col(i) = given_normals->col(Eigen::Index(input_index[std::size_t(i)]));
+            given_normals = std::move(ordered);
+        }
+
         auto start = Clock::now();
         options.sphere_of_influence.threads = options.knn.threads = options.sampling_radius.threads =
             options.domain.threads = options.outliers.threads = options.threads;
@@ -334,6 +394,7 @@ private:
             spacing = local_spacing(cloud, options.outliers.neighbors, true, options.threads);
             scan.outliers = find_outliers(*spacing, options.outliers);
             remove_outliers(cloud, given_normals, scan.outliers);
+            keep_input_indices(input_index, scan.outliers);
             if (!scan.outliers.empty()) spacing.reset(); // the cloud changed
         }
         timings.outliers = ms_since(start);
@@ -383,7 +444,7 @@ private:
         return std::make_shared<const Data>(make_data(std::move(cloud), std::move(graph), std::move(cpsp), r, weight,
                                                       std::move(estimate.normals), std::move(domain), orientation,
                                                       given_normals.has_value(), std::move(scan), timings,
-                                                      options.hierarchy, options.surface_fit));
+                                                      options.hierarchy, options.surface_fit, std::move(input_index)));
     }
 
     std::shared_ptr<const Data> m_data;

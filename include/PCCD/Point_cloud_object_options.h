@@ -44,6 +44,13 @@ struct Point_cloud_object_options {
     Outlier_options outliers = {};
     /// The point cloud hierarchy the intersection queries traverse (default: leaves of 16 points).
     Point_cloud_hierarchy_options hierarchy = {};
+    /// Store the points in a spatial (Morton, Z-order) order rather than in the order given, so that
+    /// points near in space are near in memory: every stage that visits neighbourhoods (graph, CPSP
+    /// map, normals, the queries' evaluations) then reads memory it has just read. Default: on;
+    /// preprocessing a 10^6-point random-order sample took half the time (doc/benchmarks.md, "Scale:
+    /// 10^6 points"). Point_cloud_object::input_index() maps each point back to its index among the
+    /// points given.
+    bool spatial_order = true;
     /// Worker threads of every stage; 0 (default) uses all available. Ignored without TBB. The
     /// result does not depend on it.
     unsigned threads = 0;
@@ -69,7 +76,8 @@ struct Scan_estimate {
     /// The number of points given.
     std::size_t input_points = 0;
     /// The indices (into the points given, ascending) of the isolated outliers left out of the
-    /// surface (Outlier_options); cloud() holds the other points, in their order.
+    /// surface (Outlier_options); cloud() holds the other points (Point_cloud_object::input_index()
+    /// maps them back).
     std::vector<std::uint32_t> outliers;
     /// The estimated noise level sigma of the points (noise_estimate(): median leave-one-out
     /// residual / 0.6745), length unit of the cloud. On clean samples it is the curvature the

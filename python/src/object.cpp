@@ -75,6 +75,7 @@ PCCD::Point_cloud_object_options object_options(const py::kwargs& kwargs)
         {"sampling_radius_seed",
          [](auto& o, const py::handle& v, const std::string& k) { o.sampling_radius.seed = option_value<std::uint64_t>(v, k); }},
         {"leaf_size", [](auto& o, const py::handle& v, const std::string& k) { o.hierarchy.leaf_size = option_value<std::size_t>(v, k); }},
+        {"spatial_order", [](auto& o, const py::handle& v, const std::string& k) { o.spatial_order = option_value<bool>(v, k); }},
         {"threads",
          [](auto& o, const py::handle& v, const std::string& k) {
              o.threads = option_value<unsigned>(v, k);
@@ -179,7 +180,10 @@ normals : array_like, optional
     sampling_radius_seed : int
         Seed of those samples (default 1).
     leaf_size : int
-        Largest number of points in a hierarchy leaf (default 16).
+        Largest number of points in a hierarchy leaf (default 8).
+    spatial_order : bool
+        Store the points in a spatial (Morton) order, near in memory when near in space (default
+        True; ``input_indices`` maps them back to the points given).
     threads : int
         Worker threads of the preprocessing, at most 4096; 0 (default) uses all. The result does
         not depend on it.
@@ -269,7 +273,15 @@ OSError
                                "int: Number of points given (before the removal of outliers).")
         .def_property_readonly(
             "points", [](const py::object& self) { return matrix_view(self.cast<const Object&>().cloud().coordinates(), self); },
-            "numpy.ndarray: (size, 3) read-only float64 view of the surface's points.")
+            "numpy.ndarray: (size, 3) read-only float64 view of the surface's points (outliers removed, in "
+            "spatial order unless spatial_order=False; see input_indices).")
+        .def_property_readonly(
+            "input_indices",
+            [](const Object& o) {
+                const auto& indices = o.input_indices();
+                return py::array_t<std::uint32_t>(py::ssize_t(indices.size()), indices.data());
+            },
+            "numpy.ndarray: For each row of points (and normals), its index among the points given.")
         .def_property_readonly(
             "normals", [](const py::object& self) { return matrix_view(self.cast<const Object&>().normals(), self); },
             "numpy.ndarray: (size, 3) read-only float64 view of the oriented unit normals (zero rows: "

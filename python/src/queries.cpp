@@ -267,6 +267,7 @@ py::dict counters_dict(const PCCD::Intersection_counters& c)
     d["node_pairs"] = c.node_pairs;
     d["leaf_pairs"] = c.leaf_pairs;
     d["candidates_rejected"] = c.candidates_rejected;
+    d["pending_node_pairs"] = c.pending_node_pairs;
     return d;
 }
 

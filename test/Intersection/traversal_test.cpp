@@ -161,3 +161,40 @@ TEST_CASE("Objects already in one frame need no poses", "[intersection]")
     const auto curve = PCCD::intersection_points(s.a, s.b, {.seed = 3});
     CHECK(curve.counters == PCCD::intersection_points(s.a, identity, s.b, identity, {.seed = 3}).counters);
 }
+
+TEST_CASE("The interpolation search's closest estimate measures the gap of a near miss", "[hierarchy]")
+{
+    // Two unit spheres whose centres are 2 + g apart: every point of A is at least g from sphere B,
+    // and f_B is the signed distance to B up to the surface's error (a small fraction of r on a
+    // clean sphere), so the smallest |f_B| over points of A cannot fall much below g.
+    const Spheres& s = spheres();
+    const Rigid_transform_3<double> identity(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero());
+    std::size_t estimated = 0;
+    for (const double g : {0.2, 0.5, 0.8, 1.2}) {
+        const Rigid_transform_3<double> pose_b(Eigen::Matrix3d::Identity(), Eigen::Vector3d(2.0 + g * s.r, 0, 0));
+        for (const PCCD::Traversal traversal : {PCCD::Traversal::flat, PCCD::Traversal::likelihood}) {
+            const auto result = PCCD::do_intersect(s.a, identity, s.b, pose_b, {.seed = 4, .traversal = traversal});
+            INFO("gap " << g << " r, traversal " << int(traversal) << ": estimate " << result.closest_estimate / s.r
+                        << " r, " << result.counters.f_evaluations << " f evaluations");
+            REQUIRE_FALSE(std::isnan(result.closest_estimate));
+            REQUIRE(result.status == PCCD::Intersection_status::separate);
+            CHECK(result.counters.pending_node_pairs == 0); // a "separate" walk ran to its end
+            if (std::isinf(result.closest_estimate)) continue; // no sample had f_B defined
+            ++estimated;
+            CHECK(result.closest_estimate >= g * s.r - 0.2 * s.r);
+            // Samples cover the region within reach: the nearest sampled point is not far off.
+            CHECK(result.closest_estimate <= g * s.r + 1.5 * s.r);
+        }
+    }
+    CHECK(estimated >= 4);
+    // A spent budget still reports what it saw: finite or +infinity, never NaN.
+    const Rigid_transform_3<double> near(Eigen::Matrix3d::Identity(), Eigen::Vector3d(2.0 + 0.3 * s.r, 0, 0));
+    const auto cut = PCCD::do_intersect(s.a, identity, s.b, near, {.max_f_evaluations = 3});
+    CHECK(cut.status == PCCD::Intersection_status::undecided);
+    CHECK_FALSE(std::isnan(cut.closest_estimate));
+    // Cut inside the walk (no probes first): it says how many node pairs it left.
+    const auto walked = PCCD::do_intersect(s.a, identity, s.b, near, {.max_f_evaluations = 5},
+                                           PCCD::Interpolation_search{.probe_draws = 0});
+    CHECK(walked.status == PCCD::Intersection_status::undecided);
+    CHECK(walked.counters.pending_node_pairs > 0);
+}

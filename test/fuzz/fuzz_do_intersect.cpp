@@ -328,10 +328,11 @@ void check_result(const PCCD::Intersection_result& r, const Query& q, const Obje
                 "RST reported interpolation-search counters");
         if (!verified) require(c.refinement_samples == 0, "unverified RST refined");
     } else {
-        // NaN (not estimated), or +infinity when the separation test decided before any evaluation.
-        require(std::isnan(r.closest_estimate) ||
-                    (std::isinf(r.closest_estimate) && c.f_evaluations == 0 && r.status == PCCD::Intersection_status::separate),
-                "interpolation search set closest_estimate");
+        // The smallest |f_T| over the samples: >= 0, never NaN; +infinity when no sample had f_T
+        // defined (in particular when the separation test decided before any evaluation).
+        require(!std::isnan(r.closest_estimate) && r.closest_estimate >= 0.0, "interpolation search closest_estimate NaN or < 0");
+        if (c.samples == 0) require(std::isinf(r.closest_estimate), "interpolation search estimated without samples");
+        if (c.f_evaluations == 0) require(std::isinf(r.closest_estimate), "interpolation search estimated without evaluations");
         // Per role at most `samples` when set, else max_samples for a first hit; intersection_points()
         // takes the full covering count, bounded by the region (samples <= candidate_points below).
         if (q.isearch.samples || q.first_hit) {

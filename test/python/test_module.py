@@ -114,7 +114,14 @@ def test_float32_strided_and_integer_inputs_give_the_same_object():
         assert np.array_equal(o.normals, reference.normals)
         assert o.sampling_radius == reference.sampling_radius
     grid = np.array([[x, y, 0] for x in range(20) for y in range(20)], dtype=np.int32)
-    assert np.array_equal(pccd.Object(grid).points, grid.astype(np.float64))
+    o = pccd.Object(grid)
+    assert np.array_equal(o.points, grid.astype(np.float64)[o.input_indices])
+    # The points are stored in a spatial order; input_indices is a permutation of the points given.
+    assert sorted(o.input_indices.tolist()) == list(range(len(grid)))
+    assert not np.array_equal(o.input_indices, np.arange(len(grid)))
+    unordered = pccd.Object(grid, spatial_order=False)
+    assert np.array_equal(unordered.points, grid.astype(np.float64))
+    assert np.array_equal(unordered.input_indices, np.arange(len(grid)))
 
 
 def test_object_properties_are_read_only(shapes):
@@ -138,8 +145,8 @@ def test_normals_are_hints_that_set_the_orientation():
     inward = pccd.Object(p, normals=-p)
     outward = pccd.Object(p, normals=p)
     assert inward.normals_given
-    assert np.all(np.einsum("ij,ij->i", inward.normals, p) < 0)
-    assert np.all(np.einsum("ij,ij->i", outward.normals, p) > 0)
+    assert np.all(np.einsum("ij,ij->i", inward.normals, p[inward.input_indices]) < 0)
+    assert np.all(np.einsum("ij,ij->i", outward.normals, p[outward.input_indices]) > 0)
 
 
 # --- save / load ----------------------------------------------------------------------------------
@@ -168,7 +175,7 @@ def test_answers_and_result(shapes):
     assert set(hit.counters) == {
         "f_evaluations", "brackets_tried", "partner_candidates", "brackets_found", "search_steps",
         "bisection_steps", "samples", "candidate_points", "refinement_samples", "node_pairs", "leaf_pairs",
-        "candidates_rejected"}
+        "candidates_rejected", "pending_node_pairs"}
     assert hit.counters["f_evaluations"] > 0
     miss = pccd.do_intersect(sphere, APART, torus, None, method="rst")
     assert not miss.intersects and miss.status == "separate" and miss.points.shape == (0, 3)

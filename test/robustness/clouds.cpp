@@ -37,6 +37,15 @@ void require_graphs_build(const Cloud& cloud)
 
 /// The scalar state of a built object is finite and positive; every stored normal is a unit
 /// vector or zero (undetermined), never NaN.
+/// For each point given, its index in the object (which stores its points in spatial order);
+/// object.size() for an outlier left out.
+std::vector<std::size_t> object_index_of(const Object& object)
+{
+    std::vector<std::size_t> index(object.scan().input_points, object.size());
+    for (std::size_t i = 0; i < object.size(); ++i) index[object.input_index(i)] = i;
+    return index;
+}
+
 void require_finite_state(const Object& object)
 {
     CHECK(std::isfinite(object.sampling_radius()));
@@ -243,8 +252,10 @@ TEST_CASE("clouds: far-apart pieces, isolated points and duplicated points", "[r
         CHECK(PCCD::graph_components(object.graph()).count == 3);
         CHECK(object.orientation().components == 3);
         CHECK(object.orientation().unoriented == 0);
-        for (std::size_t i = 0; i < points.size(); ++i)
-            CHECK(object.normals().col(Eigen::Index(i)).dot(points[i] - centres[i / 300]) > 0.0);
+        for (std::size_t i = 0; i < object.size(); ++i) {
+            const std::size_t given = object.input_index(i);
+            CHECK(object.normals().col(Eigen::Index(i)).dot(points[given] - centres[given / 300]) > 0.0);
+        }
         // Between the pieces the surface is undefined, and says so.
         const auto gap = object.surface().evaluate(Eigen::Vector3d(50, 0, 0));
         CHECK(gap.status == PCCD::Surface_status::outside_support);
@@ -264,7 +275,7 @@ TEST_CASE("clouds: far-apart pieces, isolated points and duplicated points", "[r
         require_finite_state(kept);
         CHECK(kept.scan().outliers.empty());
         CHECK(kept.orientation().unoriented == 1);
-        CHECK(kept.normals().col(300).isZero(0.0));
+        CHECK(kept.normals().col(Eigen::Index(object_index_of(kept)[300])).isZero(0.0));
         CHECK(kept.orientation().components == 1);
     }
     SECTION("every point duplicated: copies share their normal and their surface value")
@@ -277,11 +288,13 @@ TEST_CASE("clouds: far-apart pieces, isolated points and duplicated points", "[r
         require_finite_state(object);
         CHECK(object.orientation().components == 1);
         CHECK(object.orientation().unoriented == 0);
-        for (Eigen::Index i = 0; i < 300; ++i) {
-            CHECK(object.normals().col(i).isApprox(object.normals().col(i + 300)));
-            CHECK(object.normals().col(i).dot(copy[std::size_t(i)]) > 0.0);
+        const std::vector<std::size_t> at = object_index_of(object);
+        for (std::size_t i = 0; i < 300; ++i) {
+            const auto a = Eigen::Index(at[i]), b = Eigen::Index(at[i + 300]);
+            CHECK(object.normals().col(a).isApprox(object.normals().col(b)));
+            CHECK(object.normals().col(a).dot(copy[i]) > 0.0);
         }
-        const auto e = object.surface().evaluate_at(0), f = object.surface().evaluate_at(300);
+        const auto e = object.surface().evaluate_at(std::uint32_t(at[0])), f = object.surface().evaluate_at(std::uint32_t(at[300]));
         REQUIRE(e.defined());
         REQUIRE(f.defined());
         CHECK(e.value == Approx(f.value).margin(1e-12));
@@ -293,7 +306,9 @@ TEST_CASE("clouds: far-apart pieces, isolated points and duplicated points", "[r
         const Object object(points);
         require_finite_state(object);
         CHECK(object.orientation().components == 1);
-        for (std::size_t i = 144; i < points.size(); ++i) CHECK(object.normals().col(Eigen::Index(i)).isApprox(object.normals().col(30)));
+        const std::vector<std::size_t> at = object_index_of(object);
+        for (std::size_t i = 144; i < points.size(); ++i)
+            CHECK(object.normals().col(Eigen::Index(at[i])).isApprox(object.normals().col(Eigen::Index(at[30]))));
     }
 }
 

@@ -42,6 +42,9 @@ struct Reach_counters {
     std::size_t node_pairs = 0;
     /// Leaf pairs whose points were compared.
     std::size_t leaf_pairs = 0;
+    /// Node pairs still waiting when the visitor stopped the traversal (their subtrees were not
+    /// visited); 0 when the traversal ran to its end.
+    std::size_t pending = 0;
 };
 
 /// Whether box `a` mapped by `a_to_b` and grown by `margin_a`, and the axis-aligned box `b` grown by
@@ -139,6 +142,38 @@ inline std::pair<std::size_t, double> nearest_point(const Point_cloud_hierarchy&
     return best;
 }
 
+/// A point of t near q (t's local frame), found by one descent without backtracking: from the root,
+/// into the child whose box lies nearer q (the one whose centre is nearer when q is inside both),
+/// then the nearest point of that leaf. Returns its position in hierarchy order and its squared
+/// distance ({t.size(), +inf} for an empty hierarchy). Not always the nearest point: it is when q
+/// lies inside the boxes on one root-to-leaf path only (e.g. on the sampled surface, away from box
+/// boundaries), otherwise a point of a leaf whose box is nearest at each level. A cheap step for
+/// heuristics (the probes of the walked traversals); nearest_point() is the exact query.
+/// Complexity: O(height + leaf size), no stack.
+inline std::pair<std::size_t, double> descend_to_near_point(const Point_cloud_hierarchy& t, const Eigen::Vector3d& q)
+{
+    std::pair<std::size_t, double> best{t.size(), std::numeric_limits<double>::infinity()};
+    if (t.empty()) return best;
+    using Index = Point_cloud_hierarchy::Index;
+    Index i = 0;
+    while (!t.node(i).is_leaf()) {
+        const Index l = t.left(i), r = t.right(i);
+        const double dl = t.node(l).box.squaredExteriorDistance(q), dr = t.node(r).box.squaredExteriorDistance(q);
+        if (dl != dr) {
+            i = dl < dr ? l : r;
+        } else {
+            i = (t.node(l).box.center() - q).squaredNorm() <= (t.node(r).box.center() - q).squaredNorm() ? l : r;
+        }
+    }
+    const auto& leaf = t.node(i);
+    const Eigen::Matrix4Xd& points = t.ordered_points();
+    for (Index k = leaf.first; k < leaf.first + leaf.count; ++k) {
+        const double d = (points.col(k).head<3>() - q).squaredNorm();
+        if (d < best.second) best = {k, d};
+    }
+    return best;
+}
+
 /// Calls `visit(leaf_s, leaf_t)` for every pair of leaves whose boxes may hold a point of s within
 /// the reach (per `rule_t`) of a point of t: s's box mapped by `s_to_t`, t's box grown by its
 /// node's largest reach (`either`: s's box grown by s's reach or t's by t's, i.e. pairs where a
@@ -176,7 +211,10 @@ Reach_counters for_each_leaf_pair_within_reach(const Point_cloud_hierarchy& s, c
             continue;
         if (ns.is_leaf() && nt.is_leaf()) {
             ++counters.leaf_pairs;
-            if (!visit(i, j)) return counters;
+            if (!visit(i, j)) {
+                counters.pending = stack.size();
+                return counters;
+            }
             continue;
         }
         const bool descend_s = !ns.is_leaf() && (nt.is_leaf() || ns.count >= nt.count);

@@ -161,25 +161,25 @@ struct Interpolation_search {
     /// The query: the candidate points of both objects (points of A in B's region boxes grown by
     /// B's kernel support, and vice versa), then one role per object, the smaller object's points
     /// sampled first (the second role only with options.symmetric, and in first-hit mode only if
-    /// the first found nothing). `closest` is not estimated by this policy (set to NaN).
+    /// the first found nothing). `closest`: the smallest |f_T(p)| over the samples p (points of one
+    /// cloud) where the other surface's f_T was defined, +infinity when there was none: how near
+    /// the other surface passes to the points sampled (at a cloud point p, f_S(p) is about 0, so
+    /// this estimates max(|f_A|, |f_B|) there). An undecided answer reports what it saw so far.
     template <class A, class B>
     void run(const internal::Posed_object<A>& a, const internal::Posed_object<B>& b, const Intersection_options& options,
              double epsilon, internal::Query_state& state, double& closest) const
     {
-        closest = std::numeric_limits<double>::quiet_NaN();
         if (options.traversal != Traversal::flat && state.sink.first_hit() && a.object->hierarchy().has_reach() &&
             b.object->hierarchy().has_reach()) {
             internal::walk_first_hit(*this, a, b, options, epsilon, state);
-            return;
-        }
-        // The smaller object's points are sampled first; the second role runs only if needed.
-        if (a.size() <= b.size()) {
+        } else if (a.size() <= b.size()) { // the smaller object's points first; the second role if needed
             run_role(a, b, options, epsilon, state);
             if (options.symmetric && !state.stop()) run_role(b, a, options, epsilon, state);
         } else {
             run_role(b, a, options, epsilon, state);
             if (options.symmetric && !state.stop()) run_role(a, b, options, epsilon, state);
         }
+        closest = state.closest_sample;
     }
 
     /// The number of samples for a region of `region_points` points of a cloud with sampling radius

@@ -89,6 +89,9 @@ struct Intersection_counters {
     /// region small): a first hit in a deep overlap reports 0 leaf pairs.
     std::size_t node_pairs = 0;
     std::size_t leaf_pairs = 0;
+    /// Walked first-hit traversals: node pairs left unvisited when the walk stopped (at a contact,
+    /// or when a budget ran out: with an `undecided` answer, how much was left to look at).
+    std::size_t pending_node_pairs = 0;
 
     Intersection_counters& operator+=(const Intersection_counters& o)
     {
@@ -104,6 +107,7 @@ struct Intersection_counters {
         candidates_rejected += o.candidates_rejected;
         node_pairs += o.node_pairs;
         leaf_pairs += o.leaf_pairs;
+        pending_node_pairs += o.pending_node_pairs;
         return *this;
     }
     friend bool operator==(const Intersection_counters&, const Intersection_counters&) = default;
@@ -119,11 +123,13 @@ struct Intersection_result {
     /// found; a set with the requested spacing for intersection_points()).
     std::vector<Intersection_point> points;
     Intersection_counters counters;
-    /// Randomized sampling only: the smallest max(|f_A|, |f_B|) over its samples (an estimate of how
-    /// far the surfaces are from touching); +infinity when no sample had both defined. For every
-    /// policy: +infinity when the separation test of the hierarchy traversals decided (no point can
-    /// lie within both surfaces' domains; doc/manual/hierarchy.md); otherwise NaN for the
-    /// interpolation search, which makes no estimate.
+    /// How far the surfaces are from touching, as far as the query looked (also when it ran out of
+    /// budget: the best estimate so far of an `undecided` answer). Randomized sampling: the smallest
+    /// max(|f_A|, |f_B|) over its samples, +infinity when no sample had both defined. Interpolation
+    /// search: the smallest |f_T(p)| over its samples p (points of one cloud, f_T the other
+    /// surface, where defined; f of a cloud at its own points is about 0), +infinity when f_T was
+    /// defined at none. Both policies: +infinity when the separation test of the hierarchy
+    /// traversals decided (no point can lie within both surfaces' domains; doc/manual/hierarchy.md).
     double closest_estimate = 0.0;
 
     explicit operator bool() const { return intersects; }

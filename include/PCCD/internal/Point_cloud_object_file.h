@@ -6,6 +6,9 @@
 
 #include <PCCD/Point_cloud_object.h>
 
+#include <numeric>
+#include <vector>
+
 namespace PCCD {
 
 namespace internal {
@@ -60,17 +63,17 @@ inline void read_scan_section(Binary_reader& in, std::uint64_t n, Scan_estimate&
 
 } // namespace internal
 
-// File format (version 3, little-endian whatever the host, with a byte-order mark, no padding):
+// File format (version 4, little-endian whatever the host, with a byte-order mark, no padding):
 //   magic "PCCDOBJ\0" | u32 version | u32 byte-order mark | u64 N | f64 sampling radius
 //   f64 bandwidth h | f64 theta_eps | u8 normals given | u64 flipped, components, unoriented
 //   f64 timings[5] | f64 points[3N] | f64 normals[3N]
 //   | f64 noise | u64 input points | u64 M | u32 outliers[M] | u64 D (0 or N) | f64 domain radii[D]
-//   | u8 surface fit (Surface_fit)
+//   | u8 surface fit (Surface_fit) | u64 I (N) | u32 input indices[I]
 //   | u64 G | G bytes: a geodesic file
 //   | u64 checksum (FNV-1a over 64-bit words of everything before it)
 // Version 1 files (without the scan section) still load: no outliers, noise 0, and the domain of
 // the default Surface_domain_options; versions 1 and 2 (without the fit) get the plane fit they
-// were made with.
+// were made with; versions 1 to 3 (points in the order given) get the identity as input indices.
 template <PointCloudKernel K>
 void Point_cloud_object<K>::save(const std::string& path) const
 {
@@ -103,6 +106,8 @@ void Point_cloud_object<K>::save(const std::string& path) const
     out.put(std::uint64_t(domain_radii().size()));
     out.write(domain_radii().data(), sizeof(double) * std::size_t(domain_radii().size()));
     out.put(std::uint8_t(surface().fit()));
+    out.put(std::uint64_t(d.input_index.size()));
+    out.write(d.input_index.data(), sizeof(std::uint32_t) * d.input_index.size());
     out.put(std::uint64_t(geodesic.size()));
     out.write(geodesic.data(), geodesic.size());
     out.finish();
@@ -164,6 +169,20 @@ Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path,
         if (stored > std::uint8_t(Surface_fit::sphere)) in.fail(internal::concat("unknown surface fit ", int(stored)));
         fit = Surface_fit(stored);
     }
+    std::vector<std::uint32_t> input_index(n);
+    if (version >= 4) {
+        if (in.get<std::uint64_t>() != n) in.fail("the input indices are not one per point");
+        in.read(input_index.data(), sizeof(std::uint32_t) * n);
+        std::vector<bool> seen(scan.input_points); // an index is a kept point's or an outlier's, once
+        for (const std::uint32_t i : scan.outliers) seen[i] = true;
+        for (const std::uint32_t i : input_index) {
+            if (i >= scan.input_points || seen[i])
+                in.fail(internal::concat("input index ", i, " repeated or beyond the ", scan.input_points, " points given"));
+            seen[i] = true;
+        }
+    } else {
+        std::iota(input_index.begin(), input_index.end(), std::uint32_t(0));
+    }
     const auto geodesic_size = in.get<std::uint64_t>();
     if (in.remaining() < sizeof(std::uint64_t) || in.remaining() - sizeof(std::uint64_t) != geodesic_size)
         in.fail("inconsistent size of the geodesic section");
@@ -185,7 +204,8 @@ Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path,
         if (!domain) domain = surface_domain_radii(cloud);
         return Point_cloud_object(std::make_shared<const Data>(
             make_data(std::move(cloud), std::move(graph), std::move(cpsp), r, weight, std::move(normals),
-                      std::move(*domain), orientation, given, std::move(scan), timings, hierarchy, fit)));
+                      std::move(*domain), orientation, given, std::move(scan), timings, hierarchy, fit,
+                      std::move(input_index))));
     } catch (const File_error&) {
         throw;
     } catch (const Invalid_input& e) {

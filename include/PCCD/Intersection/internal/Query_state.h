@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <unordered_map>
 #include <vector>
@@ -121,6 +122,9 @@ struct Query_state {
     /// Time budget: the query stops once the steady clock passes it.
     std::optional<Steady_clock::time_point> deadline;
     bool budget_hit = false;
+    /// The smallest |f_T(p)| over the samples p of the interpolation search where f_T was defined
+    /// (p a point of one cloud, f_T the other surface); +infinity before any.
+    double closest_sample = std::numeric_limits<double>::infinity();
     Random_engine engine;
     Point_sink sink;
     /// Empty: candidates are kept as they are (unverified).

@@ -180,6 +180,7 @@ struct Isearch_role {
         const Surface_evaluation ei = evaluate_point(i);
         if (!ei.defined()) return true;
         const double di = ei.value;
+        state.closest_sample = std::min(state.closest_sample, std::abs(di));
         // With verified contacts, a sample as close to the tested surface as the noise keeps it
         // from its own is a candidate too: coincident surfaces have no sign change to bracket.
         if (std::abs(di) <= epsilon || (state.verifier && std::abs(di) <= epsilon + noise_band)) {

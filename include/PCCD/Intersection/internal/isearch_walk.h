@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
@@ -25,10 +26,11 @@
 namespace PCCD::internal {
 
 /// One probe of s for a point within the reach of t: from a random point of s (uniform, with
-/// replacement), up to `steps` alternating nearest-point steps (the nearest point of t, then the
-/// nearest point of s to that), which descend to where the two clouds come closest, i.e. to where
-/// they cross in a deep overlap. The first point of s found within the reach of t is sampled in
-/// `role` unless it was sampled or covered already. Returns false when the query must stop.
+/// replacement), up to `steps` alternating nearest-point steps (a point of t near it, then a point
+/// of s near that, each by descend_to_near_point: a heuristic needs no exact neighbour), which
+/// descend to where the two clouds come closest, i.e. to where they cross in a deep overlap. The
+/// first point of s found within the reach of t is sampled in `role` unless it was sampled or
+/// covered already. Returns false when the query must stop.
 template <class Role_type>
 inline bool probe(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t, const Reach_rule& rule_t,
                   std::size_t cap, std::unordered_set<std::uint32_t>& done, Covering_grid& cover, Role_type& role,
@@ -39,7 +41,7 @@ inline bool probe(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t
     auto k = std::size_t(uniform_index(role.state.engine, s.size()));
     for (std::size_t step = 0;; ++step) {
         const Eigen::Vector3d local = s.ordered_points().col(Eigen::Index(k)).head<3>();
-        const auto [m, squared] = nearest_point(t, role.s_to_t.transform_point(local));
+        const auto [m, squared] = descend_to_near_point(t, role.s_to_t.transform_point(local));
         const double reach = rule_t(t.ordered_points()(3, Eigen::Index(m)));
         if (squared <= reach * reach) {
             const std::uint32_t index = s.order()[k];
@@ -49,7 +51,8 @@ inline bool probe(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t
             return role.sample(index) && !role.state.stop();
         }
         if (step >= steps) return true;
-        const auto next = nearest_point(s, t_to_s.transform_point(t.ordered_points().col(Eigen::Index(m)).head<3>())).first;
+        const Eigen::Vector3d back = t_to_s.transform_point(t.ordered_points().col(Eigen::Index(m)).head<3>());
+        const auto next = descend_to_near_point(s, back).first;
         if (next == k) return true; // the clouds come closest here, out of reach
         k = next;
     }
@@ -82,6 +85,70 @@ bool sample_leaf(const Point_cloud_hierarchy& s, Point_cloud_hierarchy::Index ls
         if (!role.sample(s.order()[k]) || role.state.stop()) return false;
     }
     return true;
+}
+
+/// Takes, in the role of `s_role`, the points of `ks` whose bit is set in `inside` (leaf `ls` of s,
+/// in hierarchy order) that it has not sampled yet and that no sample covers, up to `cap` samples.
+/// Returns false when the query must stop.
+template <class Role_type>
+bool sample_marked(const Point_cloud_hierarchy& s, Point_cloud_hierarchy::Index ls, std::uint64_t inside,
+                   std::size_t cap, std::unordered_set<std::uint32_t>& done, Covering_grid& cover, Role_type& role)
+{
+    const auto& ns = s.node(ls);
+    for (; inside != 0; inside &= inside - 1) {
+        if (role.taken >= cap) return true;
+        const auto k = ns.first + Point_cloud_hierarchy::Index(std::countr_zero(inside));
+        if (!done.insert(s.order()[k]).second) continue;
+        ++role.state.counters.candidate_points;
+        const Eigen::Vector3d local = s.ordered_points().col(k).head<3>();
+        if (cover.covers(local)) continue;
+        cover.add(local);
+        if (!role.sample(s.order()[k]) || role.state.stop()) return false;
+    }
+    return true;
+}
+
+/// Both roles at a leaf pair: the points of leaf `la` of a within the reach of a point of leaf `lb`
+/// of b are sampled in `role_a` (when `use_a`), then those of `lb` within the reach of a point of
+/// `la` in `role_b` (when `use_b`), as two calls of sample_leaf() would, but with each point
+/// mapped and each distance computed once for both. Returns false when the query must stop.
+template <class Role_a, class Role_b>
+bool sample_leaf_pair(const Point_cloud_hierarchy& ha, Point_cloud_hierarchy::Index la, const Point_cloud_hierarchy& hb,
+                      Point_cloud_hierarchy::Index lb, const Reach_rule& rule_a, const Reach_rule& rule_b,
+                      std::size_t cap, bool use_a, bool use_b, std::unordered_set<std::uint32_t>& done_a,
+                      Covering_grid& cover_a, Role_a& role_a, std::unordered_set<std::uint32_t>& done_b,
+                      Covering_grid& cover_b, Role_b& role_b)
+{
+    using Index = Point_cloud_hierarchy::Index;
+    constexpr Index most = 64; // one bit per point of a leaf
+    const auto& na = ha.node(la);
+    const auto& nb = hb.node(lb);
+    if (na.count > most || nb.count > most) { // leaves larger than the masks: one side at a time
+        if (use_a && !sample_leaf(ha, la, hb, lb, rule_b, cap, done_a, cover_a, role_a)) return false;
+        return !use_b || sample_leaf(hb, lb, ha, la, rule_a, cap, done_b, cover_b, role_b);
+    }
+    const Eigen::Matrix4Xd& pa = ha.ordered_points();
+    const Eigen::Matrix4Xd& pb = hb.ordered_points();
+    Eigen::Vector3d mapped[most]; // la's points in b's frame
+    double reach_a[most], reach_b[most];
+    for (Index k = 0; k < na.count; ++k) {
+        mapped[k] = role_a.s_to_t.transform_point(Eigen::Vector3d(pa.col(na.first + k).head<3>()));
+        reach_a[k] = rule_a(pa(3, na.first + k));
+        reach_a[k] *= reach_a[k];
+    }
+    for (Index m = 0; m < nb.count; ++m) {
+        reach_b[m] = rule_b(pb(3, nb.first + m));
+        reach_b[m] *= reach_b[m];
+    }
+    std::uint64_t inside_a = 0, inside_b = 0; // bit k: point k of the leaf is within the other's reach
+    for (Index k = 0; k < na.count; ++k)
+        for (Index m = 0; m < nb.count; ++m) {
+            const double squared = (pb.col(nb.first + m).head<3>() - mapped[k]).squaredNorm();
+            if (squared <= reach_b[m]) inside_a |= std::uint64_t(1) << k;
+            if (squared <= reach_a[k]) inside_b |= std::uint64_t(1) << m;
+        }
+    if (use_a && !sample_marked(ha, la, inside_a, cap, done_a, cover_a, role_a)) return false;
+    return !use_b || sample_marked(hb, lb, inside_b, cap, done_b, cover_b, role_b);
 }
 
 /// First-hit queries under the depth_first and likelihood traversals: the two hierarchies are
@@ -123,13 +190,15 @@ void walk_first_hit(const Policy& policy, const Posed_object<A>& a, const Posed_
                 ha, hb, role_a.s_to_t, rule_a, rule_b,
                 [&](Index la, Index lb) {
                     if (state.out_of_budget()) return false;
-                    if (use_a && !sample_leaf(ha, la, hb, lb, rule_b, cap, done_a, cover_a, role_a)) return false;
-                    if (use_b && !sample_leaf(hb, lb, ha, la, rule_a, cap, done_b, cover_b, role_b)) return false;
+                    if (!sample_leaf_pair(ha, la, hb, lb, rule_a, rule_b, cap, use_a, use_b, done_a, cover_a, role_a,
+                                          done_b, cover_b, role_b))
+                        return false;
                     return active();
                 },
                 options.traversal == Traversal::likelihood, true);
             state.counters.node_pairs += c.node_pairs;
             state.counters.leaf_pairs += c.leaf_pairs;
+            state.counters.pending_node_pairs += c.pending;
         });
     });
 }
