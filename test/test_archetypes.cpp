@@ -7,7 +7,8 @@
 // Concepts covered: CollisionObject and LeafIntersector (do_intersect, intersection_points, both
 // policies, both path choices), PathSource, SurfaceDistance and SurfaceWeight (WLS_surface,
 // estimate_normals), PointCloudKernel and ReadablePointMap (Point_cloud_object, then the queries),
-// PointGraph and ProximityGraph (orient_normals, Paths_on_the_fly).
+// PointGraph, ProximityGraph and EdgeFlagMap (orient_normals, Paths_on_the_fly, the CPSP map with
+// both bounded Dijkstras). The kinetic concepts have their own file, concepts/kinetic_archetypes_test.cpp.
 #include "surface_test_helpers.h"
 
 #include <PCCD/Intersection/do_intersect.h>
@@ -17,6 +18,7 @@
 #include <PCCD/concepts/CollisionObject.h>
 #include <PCCD/concepts/PathSource.h>
 #include <PCCD/concepts/ProximityGraph.h>
+#include <PCCD/Geodesic/Close_pairs_shortest_paths.h>
 #include <PCCD/Geodesic/Paths_on_the_fly.h>
 #include <PCCD/Surface/orient_normals.h>
 #include <PCCD/concepts/SurfaceDistance.h>
@@ -44,6 +46,7 @@ struct Graph {
     std::vector<std::uint64_t> offsets; // n + 1
     std::vector<std::uint32_t> targets;
     std::vector<float> lengths;
+    std::vector<bool> flags; // per edge, read by Flag_map only
 };
 struct Edge {
     std::uint32_t source;
@@ -76,8 +79,59 @@ struct Length_map {
     friend double get(const Length_map& m, const Edge& e) { return m.graph->lengths[e.index]; }
 };
 
+/// Exactly what EdgeFlagMap requires: get() of an edge, convertible to bool. No property_traits.
+struct Flag_map {
+    const Graph* graph;
+    friend bool get(const Flag_map& m, const Edge& e) { return m.graph->flags[e.index]; }
+};
+
+/// Near-miss of EdgeFlagMap: get() gives a name, not a flag.
+struct Name_map {
+    friend std::string get(const Name_map&, const Edge&);
+};
+
 /// Near-miss: a graph whose vertices are not indices (a string-keyed graph).
 struct Named_graph {};
+
+/// Near-misses of PointGraph: the archetype's storage with one operation left out.
+enum Left_out { no_num_vertices, no_out_edges, no_target };
+template <int Missing>
+struct Partial_graph {
+    Graph g;
+};
+template <int M>
+    requires(M != no_num_vertices)
+std::size_t num_vertices(const Partial_graph<M>& p)
+{
+    return num_vertices(p.g);
+}
+template <int M>
+std::pair<Vertex_iterator, Vertex_iterator> vertices(const Partial_graph<M>& p)
+{
+    return vertices(p.g);
+}
+template <int M>
+    requires(M != no_out_edges)
+std::pair<Out_edge_iterator, Out_edge_iterator> out_edges(std::uint32_t v, const Partial_graph<M>& p)
+{
+    return out_edges(v, p.g);
+}
+template <int M>
+std::size_t out_degree(std::uint32_t v, const Partial_graph<M>& p)
+{
+    return out_degree(v, p.g);
+}
+template <int M>
+std::uint32_t source(const Edge& e, const Partial_graph<M>& p)
+{
+    return source(e, p.g);
+}
+template <int M>
+    requires(M != no_target)
+std::uint32_t target(const Edge& e, const Partial_graph<M>& p)
+{
+    return target(e, p.g);
+}
 
 } // namespace archetype
 
@@ -96,6 +150,8 @@ struct graph_traits<archetype::Graph> {
     using degree_size_type = std::size_t;
     static vertex_descriptor null_vertex() { return std::numeric_limits<std::uint32_t>::max(); }
 };
+template <int M>
+struct graph_traits<archetype::Partial_graph<M>> : graph_traits<archetype::Graph> {};
 template <>
 struct graph_traits<archetype::Named_graph> {
     using vertex_descriptor = std::string;
@@ -108,6 +164,13 @@ static_assert(PCCD::PointGraph<archetype::Graph>);
 static_assert(PCCD::ProximityGraph<archetype::Graph, archetype::Length_map>);
 static_assert(!PCCD::ProximityGraph<archetype::Graph, int>);
 static_assert(!PCCD::PointGraph<archetype::Named_graph>);
+static_assert(PCCD::PointGraph<archetype::Partial_graph<-1>>); // nothing left out
+static_assert(!PCCD::PointGraph<archetype::Partial_graph<archetype::no_num_vertices>>);
+static_assert(!PCCD::PointGraph<archetype::Partial_graph<archetype::no_out_edges>>);
+static_assert(!PCCD::PointGraph<archetype::Partial_graph<archetype::no_target>>);
+static_assert(PCCD::EdgeFlagMap<archetype::Flag_map, archetype::Graph>);
+static_assert(PCCD::EdgeFlagMap<PCCD::No_virtual_edges, archetype::Graph>);
+static_assert(!PCCD::EdgeFlagMap<archetype::Name_map, archetype::Graph>);
 
 using namespace pccd_test;
 
@@ -562,4 +625,48 @@ TEST_CASE("normal orientation and paths on the fly run on a graph archetype as o
             CHECK(length(a) == Catch::Detail::Approx(length(m)).epsilon(1e-6));
         }
     CHECK(found > 100);
+}
+
+TEST_CASE("the CPSP map builds over a graph archetype as over the model", "[concepts]")
+{
+    // Every edge of the object's graph, virtual ones included, copied into the archetype with its
+    // flag: both bounded Dijkstras, over real edges only and over all edges, give the lists of the
+    // CPSP map of PCCD's own graph type (same points, same distances up to float rounding).
+    const auto sample = sample_shape(test_torus(), 1500, 0.0, 97);
+    const archetype::Object object(columns(sample.points));
+    const PCCD::Proximity_graph& model = object.graph();
+    archetype::Graph graph;
+    graph.offsets.push_back(0);
+    std::size_t virtual_edges = 0;
+    for (std::uint32_t v = 0; v < model.num_vertices(); ++v) {
+        for (auto e = model.row_offsets()[v]; e < model.row_offsets()[v + 1]; ++e) {
+            graph.targets.push_back(model.targets()[e]);
+            graph.lengths.push_back(model.edge_property(e).length);
+            graph.flags.push_back(model.edge_property(e).is_virtual);
+            virtual_edges += model.edge_property(e).is_virtual;
+        }
+        graph.offsets.push_back(graph.targets.size());
+    }
+    INFO(virtual_edges << " virtual edges");
+    const double r = object.sampling_radius();
+    for (const auto algorithm : {PCCD::Bounded_dijkstra::hand_written, PCCD::Bounded_dijkstra::boost})
+        for (const bool use_virtual : {false, true}) {
+            INFO("algorithm " << int(algorithm) << ", virtual edges " << use_virtual);
+            const PCCD::Cpsp_options options{.use_virtual_edges = use_virtual, .algorithm = algorithm};
+            const PCCD::Close_pairs_shortest_paths expected(model, r, options);
+            const PCCD::Close_pairs_shortest_paths on_archetype(graph, archetype::Length_map{&graph}, r, options,
+                                                                archetype::Flag_map{&graph});
+            REQUIRE(on_archetype.size() == expected.size());
+            CHECK(on_archetype.num_entries() == expected.num_entries());
+            CHECK(expected.num_entries() > 10 * expected.size());
+            for (std::uint32_t p = 0; p < expected.size(); p += 7) {
+                const auto targets = on_archetype.targets(p);
+                REQUIRE(targets.size() == expected.targets(p).size());
+                for (std::size_t k = 0; k < targets.size(); ++k) {
+                    const std::size_t at = expected.find(p, targets[k]);
+                    REQUIRE(at != PCCD::Close_pairs_shortest_paths::npos);
+                    CHECK(on_archetype.distances(p)[k] == Catch::Detail::Approx(expected.distances(p)[at]).epsilon(1e-6));
+                }
+            }
+        }
 }
