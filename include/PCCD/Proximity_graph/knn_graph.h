@@ -14,6 +14,7 @@
 #include <PCCD/Proximity_graph/internal/graph_construction.h>
 #include <PCCD/Proximity_graph/prune_long_edges.h>
 #include <PCCD/internal/parallel.h>
+#include <PCCD/concepts/PointCloudKernel.h>
 
 namespace PCCD {
 
@@ -37,7 +38,7 @@ struct Knn_graph_options {
 /// \tparam K a model of PointCloudKernel.
 /// \throws Invalid_input if `options.k` is 0 or the long-edge factor is not > 0.
 /// Complexity: O(N k log N) expected. Thread safety: reads `cloud` only.
-template <class K>
+template <PointCloudKernel K>
 Proximity_graph knn_graph(const Point_cloud<K>& cloud, const Knn_graph_options& options = {})
 {
     using FT = typename K::FT;

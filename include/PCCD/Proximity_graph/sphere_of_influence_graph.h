@@ -13,6 +13,7 @@
 #include <PCCD/Proximity_graph/internal/graph_construction.h>
 #include <PCCD/Proximity_graph/prune_long_edges.h>
 #include <PCCD/internal/parallel.h>
+#include <PCCD/concepts/PointCloudKernel.h>
 
 namespace PCCD {
 
@@ -48,7 +49,7 @@ struct Sphere_of_influence_graph_options {
 /// \throws Invalid_input if `options.r` is 0 or the long-edge factor is not > 0.
 /// Complexity: O(N log N) expected (one k-NN and one radius-2 d_i query per point); memory of the
 /// result 8 + 12 * (directed edges) bytes per point. Thread safety: reads `cloud` only.
-template <class K>
+template <PointCloudKernel K>
 Proximity_graph sphere_of_influence_graph(const Point_cloud<K>& cloud,
                                           const Sphere_of_influence_graph_options& options = {})
 {
