@@ -4,7 +4,7 @@
 // on scans" comes from
 //   build/benchmark/scan_accuracy --rotations 50
 // (test_scan_validation runs the same code with fewer poses and asserts the acceptance figures).
-#include "../test/scan_validation.h"
+#include "../test/validation/scan_validation.h"
 
 #include <CLI/CLI.hpp>
 

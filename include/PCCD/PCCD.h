@@ -2,7 +2,7 @@
 // CGAL (PCCD/IO/read_*.h and write_*.h, which read and write files through CGAL, and PCCD/Exact/,
 // the exact reference). A program that includes only this header and links PCCD::PCCD (Eigen,
 // Boost, nanoflann, optionally TBB) can sample, preprocess, query and animate; see
-// doc/design.md for the stages and doc/manual.md for their use. test/test_umbrella_header.cpp
+// doc/design.md for the stages and doc/manual.md for their use. test/umbrella/
 // checks that it stays complete and free of CGAL.
 #pragma once
 

@@ -29,6 +29,7 @@
 #include <PCCD/Kd_tree.h>
 #include <PCCD/Point_cloud.h>
 #include <PCCD/Random.h>
+#include <PCCD/concepts/PointCloudKernel.h>
 #include <PCCD/internal/parallel.h>
 
 namespace PCCD {
@@ -69,7 +70,7 @@ inline void check(const Sampling_radius_options& o)
 }
 
 /// The Monte-Carlo estimate over the surface sampled by `surface`, distances measured to `centres`.
-template <class K>
+template <PointCloudKernel K>
 double sampling_radius_to(const Point_cloud<K>& surface, const Kd_tree<typename K::FT>& centres,
                           const Sampling_radius_options& o)
 {
@@ -161,7 +162,7 @@ double sampling_radius_to(const Point_cloud<K>& surface, const Kd_tree<typename 
 /// Complexity: O(samples * (k + c) log N), c the points within the disk radius: about 20 ms for
 /// the default 10^4 samples, independent of N but for the log. Deterministic for a given seed.
 /// Thread safety: reads `cloud` only.
-template <class K>
+template <PointCloudKernel K>
 double sampling_radius(const Point_cloud<K>& cloud, const Sampling_radius_options& options = {})
 {
     return internal::sampling_radius_to(cloud, cloud.kd_tree(), options);
@@ -171,7 +172,7 @@ double sampling_radius(const Point_cloud<K>& cloud, const Sampling_radius_option
 /// the covering radius of spheres around P' over the surface sampled by the whole cloud.
 /// \throws Invalid_input if `subset` is empty or holds an index out of range, or as above.
 /// Complexity: O(|P'| log |P'|) for a kd-tree over P', plus the cost above.
-template <class K>
+template <PointCloudKernel K>
 double sampling_radius(const Point_cloud<K>& cloud, std::span<const std::uint32_t> subset,
                        const Sampling_radius_options& options = {})
 {

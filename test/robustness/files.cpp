@@ -1,4 +1,4 @@
-// Bad-input catalogue, files (doc/reliability.md). test/test_io.cpp already holds about 110 broken
+// Bad-input catalogue, files (doc/reliability.md). test/IO/read_write_test.cpp already holds about 110 broken
 // PLY, OFF and XYZ files and a prefix/corruption fuzz loop; this file adds only what it lacks:
 // mislabelled encodings (binary bodies under ascii headers and the reverse, the wrong byte order),
 // valid files forced through the wrong reader, header oddities, and files that read correctly but

@@ -18,6 +18,8 @@
 #include <typeinfo>
 #include <vector>
 
+#include "error_test_helpers.h"
+
 namespace pccd_robustness {
 
 using Points = std::vector<Eigen::Vector3d>;
@@ -46,39 +48,8 @@ inline Points flat_grid(int n, double step, const Eigen::Vector3d& origin = Eige
     return points;
 }
 
-/// Calls `action` and requires exactly a PCCD::Invalid_input (not a File_error, not another PCCD
-/// error, not a standard exception) whose message contains every keyword.
-template <class Action>
-void require_invalid_input(Action&& action, const std::vector<std::string>& keywords)
-{
-    try {
-        action();
-        FAIL("no exception was thrown");
-    } catch (const PCCD::File_error& e) {
-        FAIL("File_error instead of Invalid_input: " << e.what());
-    } catch (const PCCD::Invalid_input& e) {
-        const std::string message = e.what();
-        INFO("message: " << message);
-        for (const std::string& keyword : keywords) CHECK_THAT(message, Catch::Contains(keyword));
-    }
-}
-
-/// Calls `action` and requires a PCCD::File_error for `path` whose message starts with the path and
-/// contains every keyword.
-template <class Action>
-void require_file_error(const std::string& path, Action&& action, const std::vector<std::string>& keywords)
-{
-    try {
-        action();
-        FAIL("no exception was thrown for " << path);
-    } catch (const PCCD::File_error& e) {
-        const std::string message = e.what();
-        INFO("message: " << message);
-        CHECK(e.file() == path);
-        CHECK_THAT(message, Catch::StartsWith(path));
-        for (const std::string& keyword : keywords) CHECK_THAT(message, Catch::Contains(keyword));
-    }
-}
+using pccd_test::require_file_error;
+using pccd_test::require_invalid_input;
 
 /// A path in this executable's own scratch directory under PCCD_TEST_TMP_DIR.
 inline std::string scratch_path(const std::string& directory, const std::string& name)

@@ -28,6 +28,7 @@
 #include <PCCD/Proximity_graph/Proximity_graph.h>
 #include <PCCD/concepts/PathSource.h>
 #include <PCCD/concepts/ProximityGraph.h>
+#include <PCCD/concepts/PointCloudKernel.h>
 
 namespace PCCD {
 
@@ -143,7 +144,7 @@ private:
 };
 
 /// Paths_on_the_fly over PCCD's default graph and the cloud it was built from.
-template <class K>
+template <PointCloudKernel K>
 Paths_on_the_fly<Proximity_graph::Graph, Proximity_graph::Length_map, Proximity_graph::Virtual_map, typename K::FT>
 paths_on_the_fly(const Proximity_graph& graph, const Point_cloud<K>& cloud, const Paths_on_the_fly_options& options = {})
 {

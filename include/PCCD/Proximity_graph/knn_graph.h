@@ -5,7 +5,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <utility>
 #include <vector>
 
 #include <PCCD/Error.h>
@@ -13,6 +12,7 @@
 #include <PCCD/Proximity_graph/Proximity_graph.h>
 #include <PCCD/Proximity_graph/internal/graph_construction.h>
 #include <PCCD/Proximity_graph/prune_long_edges.h>
+#include <PCCD/concepts/PointCloudKernel.h>
 #include <PCCD/internal/parallel.h>
 
 namespace PCCD {
@@ -37,7 +37,7 @@ struct Knn_graph_options {
 /// \tparam K a model of PointCloudKernel.
 /// \throws Invalid_input if `options.k` is 0 or the long-edge factor is not > 0.
 /// Complexity: O(N k log N) expected. Thread safety: reads `cloud` only.
-template <class K>
+template <PointCloudKernel K>
 Proximity_graph knn_graph(const Point_cloud<K>& cloud, const Knn_graph_options& options = {})
 {
     using FT = typename K::FT;
@@ -49,29 +49,16 @@ Proximity_graph knn_graph(const Point_cloud<K>& cloud, const Knn_graph_options& 
     const std::vector<std::uint32_t> order = internal::spatial_order(c);
     std::vector<internal::Found_edge> edges;
     internal::with_threads(options.threads, [&] {
-        internal::ordered_blocks(
-            tree.size(), 4096,
-            [&](std::size_t begin, std::size_t end) {
-                std::vector<internal::Found_edge> found;
-                std::vector<Neighbor<FT>> nn;
-                for (std::size_t i = begin; i < end; ++i) {
-                    const std::uint32_t u = order[i];
-                    tree.k_nearest(c.col(Eigen::Index(u)), std::size_t(options.k) + 1, nn);
-                    for (const auto& nb : nn)
-                        if (nb.index != u)
-                            found.push_back({internal::original_index(distinct, u),
-                                             internal::original_index(distinct, nb.index),
-                                             float(internal::point_distance(c, u, nb.index))});
-                }
-                return found;
-            },
-            [&](std::vector<internal::Found_edge> found) { edges.insert(edges.end(), found.begin(), found.end()); });
+        edges = internal::gather_edges<FT>(tree.size(), order, [&](std::uint32_t u, auto& nn, auto& found) {
+            tree.k_nearest(c.col(Eigen::Index(u)), std::size_t(options.k) + 1, nn);
+            for (const auto& nb : nn)
+                if (nb.index != u)
+                    found.push_back({internal::original_index(distinct, u), internal::original_index(distinct, nb.index),
+                                     float(internal::point_distance(c, u, nb.index))});
+        });
     });
-    auto graph = internal::assemble_graph(std::uint32_t(cloud.size()), edges, distinct.representative);
-    edges = {};
-    mark_long_edges(graph, get(&Proximity_edge::length, std::as_const(graph)), get(&Proximity_edge::is_virtual, graph),
-                    options.long_edges);
-    return Proximity_graph(std::move(graph), Graph_kind::knn, options.k);
+    return internal::finish_graph(std::uint32_t(cloud.size()), edges, distinct.representative, options.long_edges,
+                                  Graph_kind::knn, options.k);
 }
 
 } // namespace PCCD

@@ -12,6 +12,7 @@
 #include <PCCD/Proximity_graph/Proximity_graph.h>
 #include <PCCD/Proximity_graph/internal/graph_construction.h>
 #include <PCCD/Proximity_graph/prune_long_edges.h>
+#include <PCCD/concepts/PointCloudKernel.h>
 #include <PCCD/internal/parallel.h>
 
 namespace PCCD {
@@ -48,7 +49,7 @@ struct Sphere_of_influence_graph_options {
 /// \throws Invalid_input if `options.r` is 0 or the long-edge factor is not > 0.
 /// Complexity: O(N log N) expected (one k-NN and one radius-2 d_i query per point); memory of the
 /// result 8 + 12 * (directed edges) bytes per point. Thread safety: reads `cloud` only.
-template <class K>
+template <PointCloudKernel K>
 Proximity_graph sphere_of_influence_graph(const Point_cloud<K>& cloud,
                                           const Sphere_of_influence_graph_options& options = {})
 {
@@ -75,38 +76,26 @@ Proximity_graph sphere_of_influence_graph(const Point_cloud<K>& cloud,
         });
         // Edge (u, v) is reported by its end with the larger radius (the smaller index on a tie):
         // |p_u - p_v| <= d_u + d_v <= 2 d_u, so a radius-2 d_u query from that end finds it.
-        internal::ordered_blocks(
-            m, 4096,
-            [&](std::size_t begin, std::size_t end) {
-                std::vector<internal::Found_edge> found;
-                std::vector<Neighbor<FT>> near;
-                for (std::size_t i = begin; i < end; ++i) {
-                    const std::uint32_t k = order[i];
-                    const double du = radius[k];
-                    if (du == 0.0) continue;
-                    // A small margin so that the kd-tree's own rounding cannot drop a boundary edge;
-                    // the exact test below decides.
-                    tree.within_radius(c.col(Eigen::Index(k)), FT(2.0 * du * (1.0 + 1e-6)), near);
-                    for (const auto& nb : near) {
-                        const std::uint32_t v = nb.index;
-                        const double dv = radius[v];
-                        if (v == k || dv > du || (dv == du && v < k)) continue;
-                        const double length = internal::point_distance(c, k, v);
-                        if (length <= du + dv)
-                            found.push_back({internal::original_index(distinct, k),
-                                             internal::original_index(distinct, v), float(length)});
-                    }
-                }
-                return found;
-            },
-            [&](std::vector<internal::Found_edge> found) { edges.insert(edges.end(), found.begin(), found.end()); });
+        edges = internal::gather_edges<FT>(m, order, [&](std::uint32_t k, auto& near, auto& found) {
+            const double du = radius[k];
+            if (du == 0.0) return;
+            // A small margin so that the kd-tree's own rounding cannot drop a boundary edge; the
+            // exact test below decides.
+            tree.within_radius(c.col(Eigen::Index(k)), FT(2.0 * du * (1.0 + 1e-6)), near);
+            for (const auto& nb : near) {
+                const std::uint32_t v = nb.index;
+                const double dv = radius[v];
+                if (v == k || dv > du || (dv == du && v < k)) continue;
+                const double length = internal::point_distance(c, k, v);
+                if (length <= du + dv)
+                    found.push_back({internal::original_index(distinct, k), internal::original_index(distinct, v),
+                                     float(length)});
+            }
+        });
     });
     radius = {};
-    auto graph = internal::assemble_graph(std::uint32_t(cloud.size()), edges, distinct.representative);
-    edges = {};
-    mark_long_edges(graph, get(&Proximity_edge::length, std::as_const(graph)), get(&Proximity_edge::is_virtual, graph),
-                    options.long_edges);
-    return Proximity_graph(std::move(graph), Graph_kind::sphere_of_influence, options.r);
+    return internal::finish_graph(std::uint32_t(cloud.size()), edges, distinct.representative, options.long_edges,
+                                  Graph_kind::sphere_of_influence, options.r);
 }
 
 } // namespace PCCD

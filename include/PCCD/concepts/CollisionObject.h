@@ -1,6 +1,6 @@
 // PCCD/concepts/CollisionObject.h -- concept of the preprocessed objects the intersection queries
 // take, and of the leaf intersector policies that search them (doc/manual/intersection.md; the
-// requirements are proven by archetypes in test/test_archetypes.cpp).
+// requirements are proven by archetypes in test/concepts/archetypes_test.cpp).
 #pragma once
 
 #include <concepts>
@@ -46,7 +46,7 @@ namespace PCCD {
 /// the object lives.
 ///
 /// Model: PCCD::Point_cloud_object<K> for every kernel K. Archetype and near-misses:
-/// test/test_archetypes.cpp.
+/// test/concepts/archetypes_test.cpp.
 namespace internal {
 
 /// A 3 x N Eigen matrix of float or double held by the object (an lvalue, not a temporary).

@@ -14,8 +14,10 @@ namespace PCCD {
 /// A known, continuous trajectory t -> p(t) in R^3 (double precision, t in seconds or any unit).
 ///
 /// Requirements, for `const F& a, b`, `double t` and `int axis` in {0, 1, 2}:
-/// - `F` is copy constructible (the tree stores one flightplan per vertex and replaces them);
-/// - `a.position(t)` returns the position at time t, convertible to `Eigen::Vector3d`;
+/// - `F` is copyable: copy constructible and copy assignable (the tree stores one flightplan per
+///   vertex and set_flightplan() replaces one in place); a default constructor is not needed;
+/// - `a.position(t)` returns the position at time t as an `Eigen::Vector3d` (the trees add and
+///   compare the positions as vectors);
 /// - `a.coordinate(axis, t)` returns `a.position(t)[axis]` as a double, bit for bit;
 /// - `a.next_crossing(b, axis, t)` returns the first time from which coordinate `axis` of `a` drops
 ///   below that of `b`: inf{ s > t : a_axis(s) < b_axis(s) }, or +infinity when that never happens.
@@ -36,8 +38,8 @@ namespace PCCD {
 /// Hermite key frames). Polynomial_flightplan can represent the other two, so use it when one tree
 /// mixes kinds of motion.
 template <class F>
-concept Flightplan = std::copy_constructible<F> && requires(const F& a, const F& b, double t, int axis) {
-    { a.position(t) } -> std::convertible_to<Eigen::Vector3d>;
+concept Flightplan = std::copyable<F> && requires(const F& a, const F& b, double t, int axis) {
+    { a.position(t) } -> std::same_as<Eigen::Vector3d>;
     { a.coordinate(axis, t) } -> std::same_as<double>;
     { a.next_crossing(b, axis, t) } -> std::same_as<double>;
 };

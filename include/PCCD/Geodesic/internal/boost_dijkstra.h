@@ -30,12 +30,12 @@ struct Workspace_map {
 };
 
 /// Edge weight for BGL's Dijkstra: the length, or +infinity for an excluded virtual edge.
-template <class LengthMap, class VirtualMap>
+template <class Graph, class LengthMap, class VirtualMap>
 struct Bounded_weight_map {
     using category = boost::readable_property_map_tag;
     using value_type = double;
     using reference = double;
-    using key_type = typename boost::property_traits<LengthMap>::key_type;
+    using key_type = typename boost::graph_traits<Graph>::edge_descriptor;
     LengthMap length;
     VirtualMap is_virtual;
     bool use_virtual;
@@ -75,7 +75,7 @@ void boost_bounded_dijkstra(const Graph& g, const LengthMap& length, const Virtu
     ws.state[source].parent = source;
     const auto identity = boost::typed_identity_property_map<Vertex>();
     using State = Dijkstra_workspace::Vertex_state;
-    const Bounded_weight_map<LengthMap, VirtualMap> weight{length, is_virtual, use_virtual};
+    const Bounded_weight_map<Graph, LengthMap, VirtualMap> weight{length, is_virtual, use_virtual};
     // Saturating at the bound: a candidate beyond it is +infinity, never relaxed, never queued.
     auto combine = [bound](double a, double b) {
         const double sum = a + b;

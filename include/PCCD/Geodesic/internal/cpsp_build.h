@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include <boost/property_map/property_map.hpp>
+#include <boost/graph/graph_traits.hpp>
 
 #include <PCCD/Geodesic/internal/boost_dijkstra.h>
 #include <PCCD/Geodesic/internal/breadth_first_order.h>
@@ -45,9 +45,10 @@ std::vector<Cpsp_block> search_cpsp_blocks(const Graph& g, const LengthMap& leng
                                            const std::vector<std::uint32_t>& order)
 {
     const std::size_t n = num_vertices(g);
+    // The type get(length, e) gives (ProximityGraph asks no property_traits of the map).
+    using Edge = typename boost::graph_traits<Graph>::edge_descriptor;
     using Length = std::conditional_t<
-        std::is_same_v<std::remove_cvref_t<typename boost::property_traits<LengthMap>::value_type>, float>, float,
-        double>;
+        std::is_same_v<std::remove_cvref_t<decltype(get(length, std::declval<Edge>()))>, float>, float, double>;
     Compact_graph<Length> compact;
     if (hand_written) compact = make_compact_graph<Length>(g, length, is_virtual, use_virtual, order);
     std::vector<Cpsp_block> blocks;

@@ -11,6 +11,7 @@
 #include <limits>
 #include <memory>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -19,6 +20,7 @@
 #include <PCCD/Kd_tree.h>
 #include <PCCD/Point_cloud.h>
 #include <PCCD/Proximity_graph/Proximity_graph.h>
+#include <PCCD/Proximity_graph/prune_long_edges.h>
 #include <PCCD/internal/parallel.h>
 #include <PCCD/internal/spatial_order.h>
 
@@ -175,6 +177,41 @@ inline Proximity_graph::Graph assemble_graph(std::uint32_t n, const std::vector<
     }
     slots = {};
     return make_csr_graph(compact, targets, properties);
+}
+
+/// The edges found from every distinct position of a cloud: `find_from(u, neighbors, found)` appends
+/// to `found` the edges it finds from distinct position u (a kd-tree index), with `neighbors` a
+/// scratch vector reused within a block. Positions are visited in spatial order `order` by blocks of
+/// 4096, in parallel when TBB is available; the edges come back in block order, so the result does
+/// not depend on the number of threads.
+template <class FT, class FindFrom>
+std::vector<Found_edge> gather_edges(std::size_t m, const std::vector<std::uint32_t>& order, const FindFrom& find_from)
+{
+    std::vector<Found_edge> edges;
+    ordered_blocks(
+        m, 4096,
+        [&](std::size_t begin, std::size_t end) {
+            std::vector<Found_edge> found;
+            std::vector<Neighbor<FT>> neighbors;
+            for (std::size_t i = begin; i < end; ++i) find_from(order[i], neighbors, found);
+            return found;
+        },
+        [&](std::vector<Found_edge> found) { edges.insert(edges.end(), found.begin(), found.end()); });
+    return edges;
+}
+
+/// The proximity graph of kind `kind` (parameter `parameter`) over the `n` points of a cloud from the
+/// edges found among its distinct positions (assemble_graph(), which `edges` is released after),
+/// with its long edges marked virtual (mark_long_edges()).
+inline Proximity_graph finish_graph(std::uint32_t n, std::vector<Found_edge>& edges,
+                                    const std::vector<std::uint32_t>& representative, const Long_edge_options& long_edges,
+                                    Graph_kind kind, unsigned parameter)
+{
+    auto graph = assemble_graph(n, edges, representative);
+    edges = {};
+    mark_long_edges(graph, get(&Proximity_edge::length, std::as_const(graph)), get(&Proximity_edge::is_virtual, graph),
+                    long_edges);
+    return Proximity_graph(std::move(graph), kind, parameter);
 }
 
 } // namespace PCCD::internal

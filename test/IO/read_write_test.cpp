@@ -29,6 +29,7 @@
 #include <type_traits>
 #include <vector>
 #include "data_helpers.h"
+#include "error_test_helpers.h"
 
 namespace {
 
@@ -96,24 +97,8 @@ bool same_bits(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::V
     return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(Eigen::Vector3d)) == 0);
 }
 
-/// Runs `read` and requires a PCCD::File_error for `path` whose message holds the file name and
-/// every keyword. Any other exception propagates and fails the test.
-template <class Read>
-void require_file_error(const std::string& path, Read&& read, const std::vector<std::string>& keywords)
-{
-    INFO("file " << path);
-    try {
-        read();
-        FAIL("no exception was thrown");
-    } catch (const PCCD::File_error& e) {
-        const std::string message = e.what();
-        INFO("message: " << message);
-        CHECK(e.file() == path);
-        CHECK_THAT(message, Catch::StartsWith(path));
-        CHECK_THAT(message, Catch::Contains(fs::path(path).filename().string()));
-        for (const std::string& keyword : keywords) CHECK_THAT(message, Catch::Contains(keyword));
-    }
-}
+using pccd_test::require_file_error;
+using pccd_test::require_invalid_input;
 
 void require_points_error(const std::string& path, const std::vector<std::string>& keywords)
 {
@@ -718,16 +703,9 @@ TEST_CASE("writing throws File_error for unwritable paths and Invalid_input for 
     require_file_error(mesh_xyz, [&] { write_triangle_mesh(mesh_xyz, mesh); }, {"unknown extension"});
 
     const std::string path = tmp_path("bad_data.ply");
+    // The writers name the file and the problem.
     const auto invalid = [&](auto&& write, const std::string& keyword) {
-        INFO("expected: " << keyword);
-        try {
-            write();
-            FAIL("no exception was thrown");
-        } catch (const PCCD::File_error& e) {
-            FAIL("File_error instead of Invalid_input: " << e.what());
-        } catch (const PCCD::Invalid_input& e) {
-            CHECK_THAT(std::string(e.what()), Catch::Contains("bad_data.") && Catch::Contains(keyword));
-        }
+        require_invalid_input(write, {"bad_data.", keyword});
     };
     invalid([&] { write_points(path, Point_data{}); }, "no points");
     Point_data bad_normals = data;

@@ -71,21 +71,25 @@ static_assert(PCCD::ReadablePointMap<CGAL::First_of_pair_property_map<std::pair<
 static_assert(!PCCD::ReadablePointMap<PCCD::Identity_point_map<double>, double>, "a double is not a point");
 static_assert(!PCCD::ReadablePointMap<int, Eigen::Vector3d>, "an int is not a map");
 
-// A user type from a laser scanner, read through a point map.
-struct Scan_point {
-    float x, y, z;
-    std::uint8_t intensity;
+// A user type from a photogrammetry pipeline (coordinates in an array, a track id), read through a
+// Boost-style point map that narrows them to float.
+struct Tie_point {
+    double coordinates[3];
+    std::uint32_t track;
 };
-struct Scan_point_map {
-    using key_type = Scan_point;
+struct Tie_point_map {
+    using key_type = Tie_point;
     using value_type = Eigen::Vector3f;
     using reference = Eigen::Vector3f;
     using category = boost::readable_property_map_tag;
-    friend Eigen::Vector3f get(const Scan_point_map&, const Scan_point& p) { return {p.x, p.y, p.z}; }
+    friend Eigen::Vector3f get(const Tie_point_map&, const Tie_point& p)
+    {
+        return Eigen::Vector3d(p.coordinates[0], p.coordinates[1], p.coordinates[2]).cast<float>();
+    }
 };
-static_assert(PCCD::ReadablePointMap<Scan_point_map, Scan_point>);
-static_assert(!PCCD::ReadablePointMap<Scan_point_map, Eigen::Vector3d>, "wrong item type");
-static_assert(!PCCD::Point3<Scan_point>, "no Point_traits for the raw scan type");
+static_assert(PCCD::ReadablePointMap<Tie_point_map, Tie_point>);
+static_assert(!PCCD::ReadablePointMap<Tie_point_map, Eigen::Vector3d>, "wrong item type");
+static_assert(!PCCD::Point3<Tie_point>, "no Point_traits for the raw tie point type");
 
 // --- ProximityGraph ------------------------------------------------------------------------------
 struct Edge_length {
@@ -108,8 +112,8 @@ static_assert(!PCCD::ProximityGraph<List_graph, int>, "int is not a weight map")
 
 TEST_CASE("a user point type works through a point map", "[concepts]")
 {
-    const std::vector<Scan_point> scan = {{0, 0, 0, 10}, {1, 0, 0, 20}, {0, 2, 0, 30}, {0, 0, 3, 40}};
-    const PCCD::Point_cloud<PCCD::Eigen_kernel<float>> cloud(scan, Scan_point_map{});
+    const std::vector<Tie_point> ties = {{{0, 0, 0}, 10}, {{1, 0, 0}, 20}, {{0, 2, 0}, 30}, {{0, 0, 3}, 40}};
+    const PCCD::Point_cloud<PCCD::Eigen_kernel<float>> cloud(ties, Tie_point_map{});
     REQUIRE(cloud.size() == 4);
     CHECK(cloud.position(2) == Eigen::Vector3f(0, 2, 0));
     CHECK(cloud.nearest(Eigen::Vector3f(0.9f, 0.1f, 0)).index == 1);

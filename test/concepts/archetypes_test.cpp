@@ -5,18 +5,29 @@
 // on them and must give the same answers as on the models.
 //
 // Concepts covered: CollisionObject and LeafIntersector (do_intersect, intersection_points, both
-// policies, both path choices), PathSource, SurfaceDistance and SurfaceWeight (WLS_surface,
-// estimate_normals), PointCloudKernel and ReadablePointMap (Point_cloud_object, then the queries),
-// PointGraph and ProximityGraph (orient_normals, Paths_on_the_fly).
+// policies, both path choices, the batch queries), PathSource (the interpolation search's role),
+// SurfaceDistance and SurfaceWeight (WLS_surface, estimate_normals), PointCloudKernel (Point_cloud,
+// both distances, the graphs, the sampling radius, outliers, the domain, Point_cloud_object) and
+// ReadablePointMap (Point_cloud_object, then the queries),
+// PointGraph, ProximityGraph and EdgeFlagMap (orient_normals, Paths_on_the_fly, the CPSP map with
+// both bounded Dijkstras). The kinetic concepts have their own file, concepts/kinetic_archetypes_test.cpp.
 #include "surface_test_helpers.h"
 
 #include <PCCD/Intersection/do_intersect.h>
+#include <PCCD/Intersection/do_intersect_many.h>
+#include <PCCD/Proximity_graph/knn_graph.h>
+#include <PCCD/Proximity_graph/sphere_of_influence_graph.h>
+#include <PCCD/Surface/Geodesic_distance.h>
+#include <PCCD/Surface/outliers.h>
+#include <PCCD/Surface/surface_domain.h>
+#include <PCCD/sampling_radius.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Surface/WLS_surface.h>
 #include <PCCD/Surface/estimate_normals.h>
 #include <PCCD/concepts/CollisionObject.h>
 #include <PCCD/concepts/PathSource.h>
 #include <PCCD/concepts/ProximityGraph.h>
+#include <PCCD/Geodesic/Close_pairs_shortest_paths.h>
 #include <PCCD/Geodesic/Paths_on_the_fly.h>
 #include <PCCD/Surface/orient_normals.h>
 #include <PCCD/concepts/SurfaceDistance.h>
@@ -44,6 +55,7 @@ struct Graph {
     std::vector<std::uint64_t> offsets; // n + 1
     std::vector<std::uint32_t> targets;
     std::vector<float> lengths;
+    std::vector<bool> flags; // per edge, read by Flag_map only
 };
 struct Edge {
     std::uint32_t source;
@@ -76,8 +88,59 @@ struct Length_map {
     friend double get(const Length_map& m, const Edge& e) { return m.graph->lengths[e.index]; }
 };
 
+/// Exactly what EdgeFlagMap requires: get() of an edge, convertible to bool. No property_traits.
+struct Flag_map {
+    const Graph* graph;
+    friend bool get(const Flag_map& m, const Edge& e) { return m.graph->flags[e.index]; }
+};
+
+/// Near-miss of EdgeFlagMap: get() gives a name, not a flag.
+struct Name_map {
+    friend std::string get(const Name_map&, const Edge&);
+};
+
 /// Near-miss: a graph whose vertices are not indices (a string-keyed graph).
 struct Named_graph {};
+
+/// Near-misses of PointGraph: the archetype's storage with one operation left out.
+enum Left_out { no_num_vertices, no_out_edges, no_target };
+template <int Missing>
+struct Partial_graph {
+    Graph g;
+};
+template <int M>
+    requires(M != no_num_vertices)
+std::size_t num_vertices(const Partial_graph<M>& p)
+{
+    return num_vertices(p.g);
+}
+template <int M>
+std::pair<Vertex_iterator, Vertex_iterator> vertices(const Partial_graph<M>& p)
+{
+    return vertices(p.g);
+}
+template <int M>
+    requires(M != no_out_edges)
+std::pair<Out_edge_iterator, Out_edge_iterator> out_edges(std::uint32_t v, const Partial_graph<M>& p)
+{
+    return out_edges(v, p.g);
+}
+template <int M>
+std::size_t out_degree(std::uint32_t v, const Partial_graph<M>& p)
+{
+    return out_degree(v, p.g);
+}
+template <int M>
+std::uint32_t source(const Edge& e, const Partial_graph<M>& p)
+{
+    return source(e, p.g);
+}
+template <int M>
+    requires(M != no_target)
+std::uint32_t target(const Edge& e, const Partial_graph<M>& p)
+{
+    return target(e, p.g);
+}
 
 } // namespace archetype
 
@@ -96,6 +159,8 @@ struct graph_traits<archetype::Graph> {
     using degree_size_type = std::size_t;
     static vertex_descriptor null_vertex() { return std::numeric_limits<std::uint32_t>::max(); }
 };
+template <int M>
+struct graph_traits<archetype::Partial_graph<M>> : graph_traits<archetype::Graph> {};
 template <>
 struct graph_traits<archetype::Named_graph> {
     using vertex_descriptor = std::string;
@@ -108,6 +173,13 @@ static_assert(PCCD::PointGraph<archetype::Graph>);
 static_assert(PCCD::ProximityGraph<archetype::Graph, archetype::Length_map>);
 static_assert(!PCCD::ProximityGraph<archetype::Graph, int>);
 static_assert(!PCCD::PointGraph<archetype::Named_graph>);
+static_assert(PCCD::PointGraph<archetype::Partial_graph<-1>>); // nothing left out
+static_assert(!PCCD::PointGraph<archetype::Partial_graph<archetype::no_num_vertices>>);
+static_assert(!PCCD::PointGraph<archetype::Partial_graph<archetype::no_out_edges>>);
+static_assert(!PCCD::PointGraph<archetype::Partial_graph<archetype::no_target>>);
+static_assert(PCCD::EdgeFlagMap<archetype::Flag_map, archetype::Graph>);
+static_assert(PCCD::EdgeFlagMap<PCCD::No_virtual_edges, archetype::Graph>);
+static_assert(!PCCD::EdgeFlagMap<archetype::Name_map, archetype::Graph>);
 
 using namespace pccd_test;
 
@@ -270,6 +342,9 @@ struct Silent_path_source { // does not say whether a path exists
 struct Path_length_source { // gives a length, not a path
     bool path(std::uint32_t, std::uint32_t) const;
 };
+struct Caching_path_source { // path() is not const: not safe to call concurrently
+    bool path(std::uint32_t, std::uint32_t, std::vector<std::uint32_t>&);
+};
 
 /// Exactly what SurfaceDistance requires, over a Euclidean_distance.
 class Distance {
@@ -351,6 +426,24 @@ struct Kernel {
     Coordinate compute_z_3_object() const { return {2}; }
     Squared_distance compute_squared_distance_3_object() const { return {}; }
 };
+struct Kernel_without_points { // cannot construct the points Point_cloud::point() returns
+    using FT = double;
+    using Point_3 = Kernel::Point_3;
+    using Vector_3 = Kernel::Vector_3;
+    Kernel::Coordinate compute_x_3_object() const;
+    Kernel::Coordinate compute_y_3_object() const;
+    Kernel::Coordinate compute_z_3_object() const;
+    Kernel::Squared_distance compute_squared_distance_3_object() const;
+};
+struct Kernel_without_z { // a planar kernel
+    using FT = double;
+    using Point_3 = Kernel::Point_3;
+    using Vector_3 = Kernel::Vector_3;
+    Kernel::Construct_point construct_point_3_object() const;
+    Kernel::Coordinate compute_x_3_object() const;
+    Kernel::Coordinate compute_y_3_object() const;
+    Kernel::Squared_distance compute_squared_distance_3_object() const;
+};
 struct Integer_kernel : Kernel { // FT is not a floating-point type
     using FT = long;
 };
@@ -386,6 +479,12 @@ struct Map_without_get {};
 static_assert(PCCD::PointCloudKernel<archetype::Kernel>);
 static_assert(!PCCD::PointCloudKernel<archetype::Integer_kernel>);
 static_assert(!PCCD::PointCloudKernel<archetype::Kernel_without_distance>);
+static_assert(!PCCD::PointCloudKernel<archetype::Kernel_without_points>);
+static_assert(!PCCD::PointCloudKernel<archetype::Kernel_without_z>);
+// Every member function of the kernel-generic classes, instantiated with the kernel archetype.
+template class PCCD::Point_cloud<archetype::Kernel>;
+template class PCCD::Euclidean_distance<archetype::Kernel>;
+template class PCCD::Geodesic_distance<archetype::Kernel>;
 static_assert(PCCD::ReadablePointMap<archetype::Point_map, archetype::Scan_record>);
 static_assert(!PCCD::ReadablePointMap<archetype::Intensity_map, archetype::Scan_record>);
 static_assert(!PCCD::ReadablePointMap<archetype::Map_without_get, archetype::Scan_record>);
@@ -409,6 +508,9 @@ static_assert(PCCD::PathSource<archetype::Path_source>);
 static_assert(PCCD::PathSource<PCCD::Stored_paths>);
 static_assert(!PCCD::PathSource<archetype::Silent_path_source>);
 static_assert(!PCCD::PathSource<archetype::Path_length_source>);
+static_assert(!PCCD::PathSource<archetype::Caching_path_source>);
+// The interpolation search's role reads its paths through the PathSource archetype.
+template struct PCCD::internal::Isearch_role<PCCD::Interpolation_search, Arch, Arch, archetype::Path_source>;
 
 static_assert(PCCD::SurfaceDistance<archetype::Distance>);
 static_assert(!PCCD::SurfaceDistance<archetype::Distance_without_point_queries>);
@@ -437,6 +539,67 @@ TEST_CASE("the intersection queries run on collision-object archetypes as on the
         CHECK(PCCD::do_intersect(arch, identity, arch, pose, {}, archetype::Leaf_intersector{}).intersects == expected);
         const auto curve = PCCD::intersection_points(arch, identity, arch, pose);
         CHECK(curve.points.size() == PCCD::intersection_points(object, identity, object, pose).points.size());
+    }
+}
+
+TEST_CASE("the batch queries run on collision-object archetypes as on the model", "[concepts]")
+{
+    const auto sample = sample_shape(unit_sphere(), 2000, 0.0, 98);
+    const archetype::Object object(columns(sample.points));
+    const Arch arch(object);
+    std::vector<PCCD::Posed_pair<Arch, Arch>> on_archetype;
+    std::vector<PCCD::Posed_pair<archetype::Object, archetype::Object>> on_model;
+    const PCCD::Rigid_transform_3<double> identity;
+    for (const double shift : {0.5, 1.5, 2.5, 3.0}) {
+        const PCCD::Rigid_transform_3<double> pose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(shift, 0.0, 0.0));
+        on_archetype.push_back({&arch, identity, &arch, pose});
+        on_model.push_back({&object, identity, &object, pose});
+    }
+    const auto expected = PCCD::do_intersect_many(on_model);
+    const auto found = PCCD::do_intersect_many(on_archetype, {.threads = 2});
+    const auto points = PCCD::intersection_points_many(on_archetype, {}, {}, PCCD::Randomized_sampling{});
+    REQUIRE(found.size() == 4);
+    for (std::size_t k = 0; k < found.size(); ++k) {
+        CHECK(expected[k].intersects == (k < 2)); // unit spheres overlap below a shift of 2
+        CHECK(found[k].intersects == expected[k].intersects);
+        CHECK(found[k].counters.f_evaluations == expected[k].counters.f_evaluations);
+        CHECK(points[k].intersects == expected[k].intersects);
+    }
+}
+
+TEST_CASE("the preprocessing runs on the kernel archetype as on the default kernel", "[concepts]")
+{
+    // The same points in the archetype kernel and in Eigen_kernel<double>: the same graphs, sampling
+    // radius, outliers, domain radii and distances (the archetype adds no rounding: FT is double).
+    const auto sample = sample_shape(test_torus(), 1500, 0.01, 99);
+    const PCCD::Point_cloud<> model(sample.points);
+    const PCCD::Point_cloud<archetype::Kernel> cloud(sample.points);
+    CHECK(PCCD::knn_graph(cloud) == PCCD::knn_graph(model));
+    const PCCD::Proximity_graph graph = PCCD::sphere_of_influence_graph(cloud);
+    CHECK(graph == PCCD::sphere_of_influence_graph(model));
+    const double r = PCCD::sampling_radius(cloud);
+    CHECK(r == PCCD::sampling_radius(model));
+    const std::vector<std::uint32_t> half = {0, 2, 4, 6, 8, 10, 12, 14, 16, 18};
+    CHECK(PCCD::sampling_radius(cloud, half) == PCCD::sampling_radius(model, half));
+    CHECK(PCCD::find_outliers(cloud) == PCCD::find_outliers(model));
+    CHECK(PCCD::surface_domain_radii(cloud) == PCCD::surface_domain_radii(model));
+    const auto map = std::make_shared<const PCCD::Close_pairs_shortest_paths>(graph, r);
+    const PCCD::Geodesic_distance<archetype::Kernel> geodesic(cloud, map);
+    const PCCD::Geodesic_distance<> geodesic_model(model, map);
+    const PCCD::Euclidean_distance<archetype::Kernel> euclidean(cloud);
+    const PCCD::Euclidean_distance<> euclidean_model(model);
+    for (std::uint32_t i = 0; i < 1500; i += 101) {
+        const Eigen::Vector3d x = model.position(i) + Eigen::Vector3d(0.01, -0.02, 0.015);
+        std::vector<std::pair<std::uint32_t, double>> a, b, c, d;
+        const auto na = geodesic.for_each_neighbor(x, 3 * r, [&](std::uint32_t j, double g) { a.emplace_back(j, g); });
+        const auto nb = geodesic_model.for_each_neighbor(x, 3 * r, [&](std::uint32_t j, double g) { b.emplace_back(j, g); });
+        const auto nc = euclidean.for_each_neighbor(x, 3 * r, [&](std::uint32_t j, double g) { c.emplace_back(j, g); });
+        const auto nd = euclidean_model.for_each_neighbor(x, 3 * r, [&](std::uint32_t j, double g) { d.emplace_back(j, g); });
+        CHECK(na == nb);
+        CHECK(a == b);
+        CHECK(nc == nd);
+        CHECK(c == d);
+        CHECK(!a.empty());
     }
 }
 
@@ -562,4 +725,48 @@ TEST_CASE("normal orientation and paths on the fly run on a graph archetype as o
             CHECK(length(a) == Catch::Detail::Approx(length(m)).epsilon(1e-6));
         }
     CHECK(found > 100);
+}
+
+TEST_CASE("the CPSP map builds over a graph archetype as over the model", "[concepts]")
+{
+    // Every edge of the object's graph, virtual ones included, copied into the archetype with its
+    // flag: both bounded Dijkstras, over real edges only and over all edges, give the lists of the
+    // CPSP map of PCCD's own graph type (same points, same distances up to float rounding).
+    const auto sample = sample_shape(test_torus(), 1500, 0.0, 97);
+    const archetype::Object object(columns(sample.points));
+    const PCCD::Proximity_graph& model = object.graph();
+    archetype::Graph graph;
+    graph.offsets.push_back(0);
+    std::size_t virtual_edges = 0;
+    for (std::uint32_t v = 0; v < model.num_vertices(); ++v) {
+        for (auto e = model.row_offsets()[v]; e < model.row_offsets()[v + 1]; ++e) {
+            graph.targets.push_back(model.targets()[e]);
+            graph.lengths.push_back(model.edge_property(e).length);
+            graph.flags.push_back(model.edge_property(e).is_virtual);
+            virtual_edges += model.edge_property(e).is_virtual;
+        }
+        graph.offsets.push_back(graph.targets.size());
+    }
+    INFO(virtual_edges << " virtual edges");
+    const double r = object.sampling_radius();
+    for (const auto algorithm : {PCCD::Bounded_dijkstra::hand_written, PCCD::Bounded_dijkstra::boost})
+        for (const bool use_virtual : {false, true}) {
+            INFO("algorithm " << int(algorithm) << ", virtual edges " << use_virtual);
+            const PCCD::Cpsp_options options{.use_virtual_edges = use_virtual, .algorithm = algorithm};
+            const PCCD::Close_pairs_shortest_paths expected(model, r, options);
+            const PCCD::Close_pairs_shortest_paths on_archetype(graph, archetype::Length_map{&graph}, r, options,
+                                                                archetype::Flag_map{&graph});
+            REQUIRE(on_archetype.size() == expected.size());
+            CHECK(on_archetype.num_entries() == expected.num_entries());
+            CHECK(expected.num_entries() > 10 * expected.size());
+            for (std::uint32_t p = 0; p < expected.size(); p += 7) {
+                const auto targets = on_archetype.targets(p);
+                REQUIRE(targets.size() == expected.targets(p).size());
+                for (std::size_t k = 0; k < targets.size(); ++k) {
+                    const std::size_t at = expected.find(p, targets[k]);
+                    REQUIRE(at != PCCD::Close_pairs_shortest_paths::npos);
+                    CHECK(on_archetype.distances(p)[k] == Catch::Detail::Approx(expected.distances(p)[at]).epsilon(1e-6));
+                }
+            }
+        }
 }

@@ -1,6 +1,6 @@
 // Accuracy of first-hit and curve queries on clouds that look like scans, against CGAL's exact
 // answer and next to the naive point test on the very same clouds. Shared by the validation test
-// (test_scan_validation.cpp) and the benchmark program (benchmark/scan_accuracy.cpp), which print
+// (validation/scan_validation_test.cpp) and the benchmark program (benchmark/scan_accuracy.cpp), which print
 // the same table; doc/benchmarks.md "Accuracy on scans" explains it, and it checks the accuracy
 // claims of doc/manual/intersection.md ("Accuracy").
 //
