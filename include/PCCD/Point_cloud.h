@@ -63,6 +63,15 @@ public:
     {
     }
 
+    /// Copies a range of points (any Point3 type) with a given kernel object: the constructor above
+    /// with the identity point map, which need not be spelled.
+    template <std::ranges::input_range Range>
+        requires Point3<std::ranges::range_value_t<Range>>
+    Point_cloud(const Range& points, const K& kernel)
+        : Point_cloud(points, Identity_point_map<std::ranges::range_value_t<Range>>(), kernel)
+    {
+    }
+
     /// Takes a 3 x N matrix of coordinates, one point per column.
     /// \throws Invalid_input as above.
     explicit Point_cloud(Coordinates coordinates, const K& kernel = K())
