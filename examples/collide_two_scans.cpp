@@ -6,8 +6,8 @@
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/Torus_shape.h>
 #include <PCCD/Sampling/Similarity_3.h>
+#include <PCCD/Sampling/Torus_shape.h>
 #include <PCCD/Sampling/sample_triangle_mesh.h>
 
 #include <Eigen/Geometry>
@@ -15,30 +15,23 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
-#include <string>
-#include <vector>
 
 using Object = PCCD::Point_cloud_object<>; // Eigen_kernel<double>
 using Pose = PCCD::Rigid_transform_3<double>;
+using Rotation = Eigen::AngleAxisd;
+using Vector = Eigen::Vector3d;
 
 // A "scan": n points drawn by area from the bunny mesh, or from a torus when the mesh is absent.
-std::vector<Eigen::Vector3d> scan(std::size_t n, std::uint64_t seed)
+Eigen::Matrix3Xd scan(std::size_t n, std::uint64_t seed)
 {
     const char* env = std::getenv("PCCD_DATA_DIR");
     const std::filesystem::path bunny = std::filesystem::path(env && *env ? env : PCCD_DATA_DIR) / "bunny00.off";
     PCCD::Random_engine engine(seed);
-    Eigen::Matrix3Xd points;
-    if (std::filesystem::exists(bunny)) {
-        PCCD::Triangle_mesh_data mesh = PCCD::IO::read_triangle_mesh(bunny.string());
-        const PCCD::Similarity_3 to_unit_cube = PCCD::compute_unit_cube_normalization(mesh.vertices);
-        for (Eigen::Vector3d& v : mesh.vertices) v = to_unit_cube.transform_point(v);
-        points = PCCD::sample_triangle_mesh(mesh.vertices, mesh.triangles, n, engine).points;
-    } else {
-        points = PCCD::Torus_shape(0.7, 0.3).sample(n, engine).points;
-    }
-    std::vector<Eigen::Vector3d> result;
-    for (Eigen::Index i = 0; i < points.cols(); ++i) result.push_back(points.col(i));
-    return result;
+    if (!std::filesystem::exists(bunny)) return PCCD::Torus_shape(0.7, 0.3).sample(n, engine).points;
+    PCCD::Triangle_mesh_data mesh = PCCD::IO::read_triangle_mesh(bunny.string());
+    const PCCD::Similarity_3 to_unit_cube = PCCD::compute_unit_cube_normalization(mesh.vertices);
+    for (Vector& v : mesh.vertices) v = to_unit_cube.transform_point(v);
+    return PCCD::sample_triangle_mesh(mesh.vertices, mesh.triangles, n, engine).points;
 }
 
 int main()
@@ -48,10 +41,9 @@ int main()
     std::cout << "scans of " << a.size() << " and " << b.size() << " points, r(P) = " << a.sampling_radius() << '\n';
 
     // A turned about z; B turned about a diagonal axis and moved along x by d.
-    const Pose pose_a(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()).toRotationMatrix(), Eigen::Vector3d::Zero());
+    const Pose pose_a(Rotation(0.3, Vector::UnitZ()).toRotationMatrix(), Vector::Zero());
     for (const double d : {0.5, 1.0, 1.5, 2.5}) {
-        const Pose pose_b(Eigen::AngleAxisd(1.2, Eigen::Vector3d(1, 1, 0).normalized()).toRotationMatrix(),
-                          Eigen::Vector3d(d, 0, 0));
+        const Pose pose_b(Rotation(1.2, Vector(1, 1, 0).normalized()).toRotationMatrix(), Vector(d, 0, 0));
         const PCCD::Intersection_result isearch = PCCD::do_intersect(a, pose_a, b, pose_b, {.seed = 7});
         const PCCD::Intersection_result rst =
             PCCD::do_intersect(a, pose_a, b, pose_b, {.seed = 7}, PCCD::Randomized_sampling{});

@@ -15,45 +15,37 @@
 #include <iostream>
 #include <numbers>
 #include <string>
-#include <vector>
 
 using Object = PCCD::Point_cloud_object<>;
-
-std::vector<Eigen::Vector3d> columns(const Eigen::Matrix3Xd& points)
-{
-    std::vector<Eigen::Vector3d> result;
-    for (Eigen::Index i = 0; i < points.cols(); ++i) result.push_back(points.col(i));
-    return result;
-}
+using Pose = PCCD::Rigid_transform_3<double>;
+using Sphere = PCCD::Sphere_shape;
+using Torus = PCCD::Torus_shape;
 
 int main(int argc, char** argv)
 {
     const std::string out = argc > 1 ? argv[1] : "intersection_curve.ply";
-    const PCCD::Sphere_shape sphere(Eigen::Vector3d::Zero(), 1.0);
-    const PCCD::Torus_shape torus(1.0, 0.35); // its tube is centred on the sphere's equator
+    const Sphere sphere(Eigen::Vector3d::Zero(), 1.0);
+    const Torus torus(1.0, 0.35); // its tube is centred on the sphere's equator
     PCCD::Random_engine engine(3);
-    const Object a(columns(sphere.sample(8000, engine).points));
-    const Object b(columns(torus.sample(8000, engine).points));
+    const Object a(sphere.sample(8000, engine).points);
+    const Object b(torus.sample(8000, engine).points);
 
     // Both objects in place (identity poses); one point every 0.05 along the curves, each a verified
     // contact: projected onto f_A = f_B = 0 inside both surfaces' domains.
-    const PCCD::Rigid_transform_3<double> identity;
     const PCCD::Intersection_result result =
-        PCCD::intersection_points(a, identity, b, identity, {.seed = 11, .point_spacing = 0.05});
+        PCCD::intersection_points(a, Pose(), b, Pose(), {.seed = 11, .point_spacing = 0.05});
 
     PCCD::Point_data data;
     double worst = 0.0;
-    std::size_t refined = 0;
     for (const PCCD::Intersection_point& p : result.points) {
         data.points.push_back(p.position);
         worst = std::max({worst, std::abs(sphere.signed_distance(p.position)), std::abs(torus.signed_distance(p.position))});
-        refined += p.kind == PCCD::Intersection_point_kind::refined ? 1 : 0;
     }
-    // The exact curves: two circles of radius 1 - r^2/2 at z = +-sqrt(1 - (1 - r^2/2)^2), total length:
+    // The exact curves: two circles of radius 1 - r^2/2 at z = +-sqrt(1 - (1 - r^2/2)^2).
     const double rho = 1.0 - 0.35 * 0.35 / 2.0;
-    std::cout << result.points.size() << " points (" << refined << " refined) for curves of length "
-              << 4.0 * std::numbers::pi * rho << ", " << result.counters.f_evaluations
-              << " f evaluations; farthest point from the exact surfaces: " << worst << '\n';
+    std::cout << result.points.size() << " points for curves of length " << 4.0 * std::numbers::pi * rho << ", "
+              << result.counters.f_evaluations << " f evaluations; farthest point from the exact surfaces: " << worst
+              << '\n';
     if (data.points.empty()) return 1;
     PCCD::IO::write_points(out, data);
     std::cout << "wrote " << out << '\n';

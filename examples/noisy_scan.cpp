@@ -11,10 +11,10 @@
 
 #include <cmath>
 #include <iostream>
-#include <vector>
 
 using Object = PCCD::Point_cloud_object<>;
 using Pose = PCCD::Rigid_transform_3<double>;
+using Vector = Eigen::Vector3d;
 
 int main()
 {
@@ -22,12 +22,11 @@ int main()
     const PCCD::Torus_shape torus(0.7, 0.3);
     const double spacing = 0.5 * std::sqrt(torus.area() / 8000.0);
     PCCD::Random_engine engine(3);
-    const Eigen::Matrix3Xd sample = torus.sample(8000, engine, {.noise_sigma = 0.5 * spacing}).points;
-    std::vector<Eigen::Vector3d> points;
-    for (Eigen::Index i = 0; i < sample.cols(); ++i) points.push_back(sample.col(i));
-    for (int k = 0; k < 80; ++k)
-        points.emplace_back(PCCD::uniform_real(engine, -1.0, 1.0), PCCD::uniform_real(engine, -1.0, 1.0),
-                            PCCD::uniform_real(engine, -0.3, 0.3));
+    Eigen::Matrix3Xd points = torus.sample(8000, engine, {.noise_sigma = 0.5 * spacing}).points;
+    points.conservativeResize(3, 8080);
+    for (Eigen::Index k = 8000; k < 8080; ++k)
+        points.col(k) = Vector(PCCD::uniform_real(engine, -1.0, 1.0), PCCD::uniform_real(engine, -1.0, 1.0),
+                               PCCD::uniform_real(engine, -0.3, 0.3));
 
     const Object scan(points); // outliers removed, noise estimated, domain set: all by default
     std::cout << scan.scan().input_points << " points given, " << scan.scan().outliers.size()
@@ -35,12 +34,12 @@ int main()
               << "noise estimate " << scan.noise_estimate() / spacing << " spacings (true: 0.5)\n";
 
     // Far from the data f is undefined, and says why.
-    const PCCD::Surface_evaluation far = scan.surface().evaluate(Eigen::Vector3d(0.7, 0.0, 0.3 + 6.0 * spacing));
+    const PCCD::Surface_evaluation far = scan.surface().evaluate(Vector(0.7, 0.0, 0.3 + 6.0 * spacing));
     std::cout << "6 spacings above the tube: " << PCCD::to_string(far.status) << '\n';
 
     // Two copies: apart by a few spacings, then overlapping.
     for (const double gap : {4.0 * spacing, -0.2}) {
-        const Pose pose_b(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.0, 0.0, 0.6 + gap));
+        const Pose pose_b(Eigen::Matrix3d::Identity(), Vector(0.0, 0.0, 0.6 + gap));
         const PCCD::Intersection_result result = PCCD::do_intersect(scan, Pose(), scan, pose_b, {.seed = 1});
         std::cout << "gap " << gap << ": " << PCCD::to_string(result.status) << ", "
                   << result.counters.candidates_rejected << " candidates rejected";

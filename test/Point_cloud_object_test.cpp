@@ -4,6 +4,7 @@
 #include "surface_test_helpers.h"
 
 #include <PCCD/Point_cloud_object.h>
+#include <PCCD/make_point_cloud_object.h>
 
 #include <catch2/catch.hpp>
 
@@ -245,4 +246,129 @@ TEST_CASE("Point_cloud_object stores its points in spatial order and maps them b
     const auto loaded = PCCD::Point_cloud_object<>::load(path);
     CHECK(loaded.input_indices() == object.input_indices());
     CHECK(loaded.scan().outliers == object.scan().outliers);
+}
+
+TEST_CASE("a point cloud object from a coordinate matrix equals the one from a range of points", "[surface]")
+{
+    const auto sample = sample_shape(unit_sphere(), 1200, 0.0, 41);
+    const std::vector<Eigen::Vector3d> points = columns(sample.points);
+    const PCCD::Point_cloud_object_options options{.graph = PCCD::Graph_kind::knn, .threads = 1};
+    // The reference: the generic form, items and an explicit point map.
+    const PCCD::Point_cloud_object<> reference(points, PCCD::Identity_point_map<Eigen::Vector3d>(), options);
+    for (const PCCD::Point_cloud_object<>& object :
+         {PCCD::Point_cloud_object<>(sample.points, options), PCCD::Point_cloud_object<>(points, options),
+          PCCD::make_point_cloud_object(sample.points, options)}) {
+        CHECK(object.cloud().coordinates() == reference.cloud().coordinates());
+        CHECK(object.graph() == reference.graph());
+        CHECK(object.normals() == reference.normals());
+        CHECK_FALSE(object.normals_given());
+    }
+    // With normals as hints, pointing inwards: the matrix form, the two ranges, the factory and a
+    // point file's data all give every normal that sign.
+    const Eigen::Matrix3Xd inward = -sample.points;
+    const std::vector<Eigen::Vector3d> inward_rows = columns(inward);
+    PCCD::Point_data data;
+    data.points = points;
+    data.normals = inward_rows;
+    const PCCD::Point_cloud_object<> from_data(data, options);
+    for (const PCCD::Point_cloud_object<>& object :
+         {PCCD::Point_cloud_object<>(sample.points, inward, options),
+          PCCD::Point_cloud_object<>(points, inward_rows, options),
+          PCCD::make_point_cloud_object(sample.points, inward, options)}) {
+        CHECK(object.normals_given());
+        CHECK(object.normals() == from_data.normals());
+        std::size_t pointing_in = 0;
+        for (Eigen::Index i = 0; i < object.normals().cols(); ++i)
+            pointing_in += object.normals().col(i).dot(sample.points.col(object.input_index(std::size_t(i)))) < 0.0;
+        CHECK(pointing_in == points.size());
+    }
+    // Not one normal per point; too few points; a point that is not finite.
+    CHECK_THROWS_WITH(PCCD::Point_cloud_object<>(sample.points, Eigen::Matrix3Xd(3, 2)),
+                      Catch::Contains("2 normals for 1200 points"));
+    CHECK_THROWS_AS(PCCD::Point_cloud_object<>(Eigen::Matrix3Xd(3, 1)), PCCD::Invalid_input);
+    Eigen::Matrix3Xd bad = sample.points;
+    bad(1, 7) = std::nan("");
+    CHECK_THROWS_AS(PCCD::Point_cloud_object<>(bad), PCCD::Invalid_input);
+}
+
+TEST_CASE("the bandwidth is automatic unless set, and a set bandwidth must be finite and > 0", "[surface]")
+{
+    const auto sample = sample_shape(unit_sphere(), 800, 0.0, 43);
+    const PCCD::Point_cloud_object<> automatic(sample.points);
+    CHECK(automatic.bandwidth() == Approx(3.0 * automatic.sampling_radius() / std::sqrt(-std::log(1e-2))));
+    CHECK(PCCD::kernel_bandwidth(2.0, {.eta = 3.0, .theta_eps = 1e-2}) == Approx(6.0 / std::sqrt(-std::log(1e-2))));
+    CHECK(PCCD::kernel_bandwidth(2.0, {.bandwidth = 0.3}) == 0.3);
+    // 0 no longer means "automatic": every value given is checked.
+    for (const double h : {0.0, -0.1, std::nan(""), HUGE_VAL}) {
+        INFO("h = " << h);
+        CHECK_THROWS_WITH(PCCD::Point_cloud_object<>(sample.points, {.bandwidth = {.bandwidth = h}}),
+                          Catch::Contains("the given bandwidth is") && Catch::Contains("leave it unset"));
+    }
+}
+
+TEST_CASE("a stage's own thread count stands; an unset one takes the object's", "[surface][threads]")
+{
+    // The rule as a function: knn keeps its 1, every unset stage takes the object's 2.
+    const PCCD::Point_cloud_object_options resolved = PCCD::resolve_threads({.knn = {.threads = 1}, .threads = 2});
+    CHECK(resolved.knn.threads == 1u);
+    CHECK(resolved.sphere_of_influence.threads == 2u);
+    CHECK(resolved.sampling_radius.threads == 2u);
+    CHECK(resolved.domain.threads == 2u);
+    CHECK(resolved.outliers.threads == 2u);
+    CHECK(resolved.threads == 2u);
+    // Nothing set: every stage stays unset (all available threads).
+    const PCCD::Point_cloud_object_options none = PCCD::resolve_threads({});
+    CHECK_FALSE(none.knn.threads.has_value());
+    CHECK_FALSE(none.domain.threads.has_value());
+
+    // The object applies it: a stage's own (invalid) count is not replaced by the object's valid one.
+    const auto sample = sample_shape(unit_sphere(), 600, 0.0, 44);
+    CHECK_THROWS_WITH(
+        PCCD::Point_cloud_object<>(sample.points, {.graph = PCCD::Graph_kind::knn, .knn = {.threads = 0}, .threads = 2}),
+        Catch::Contains("threads = 0"));
+    CHECK_THROWS_WITH(PCCD::Point_cloud_object<>(sample.points, {.threads = 0}), Catch::Contains("threads = 0"));
+    // And the result never depends on the counts.
+    const PCCD::Point_cloud_object<> one(sample.points, {.graph = PCCD::Graph_kind::knn, .threads = 1});
+    const PCCD::Point_cloud_object<> mixed(sample.points,
+                                           {.graph = PCCD::Graph_kind::knn, .knn = {.threads = 1}, .threads = 2});
+    CHECK(mixed.graph() == one.graph());
+    CHECK(mixed.normals() == one.normals());
+}
+
+TEST_CASE("the progress callback hears every stage start and end, in order", "[surface]")
+{
+    // Noise heavy enough that the noise estimate asks for a wider kernel: the CPSP map and the
+    // normals then run twice.
+    for (const double noise : {0.0, 0.6}) {
+        INFO("noise " << noise << " spacings");
+        const auto sample = sample_shape(test_torus(), 3000, noise, 45);
+        std::vector<PCCD::Preprocessing_progress> heard;
+        const PCCD::Point_cloud_object<> object(
+            sample.points, {.progress = [&](const PCCD::Preprocessing_progress& p) { heard.push_back(p); }});
+        using S = PCCD::Preprocessing_stage;
+        std::vector<S> expected{S::kd_tree, S::outliers, S::graph, S::sampling_radius, S::cpsp_map, S::normals};
+        const bool wider = object.eta() > 3.0 * (1.0 + 1e-9);
+        if (wider) expected.insert(expected.end(), {S::cpsp_map, S::normals});
+        expected.insert(expected.end(), {S::orientation, S::domain, S::hierarchy});
+        REQUIRE(heard.size() == 2 * expected.size());
+        double sum = 0.0;
+        for (std::size_t k = 0; k < expected.size(); ++k) {
+            INFO("stage " << k << ": " << PCCD::to_string(expected[k]));
+            const PCCD::Preprocessing_progress& start = heard[2 * k];
+            const PCCD::Preprocessing_progress& end = heard[2 * k + 1];
+            CHECK(start.stage == expected[k]);
+            CHECK_FALSE(start.finished);
+            CHECK(start.milliseconds == 0.0);
+            CHECK(end.stage == expected[k]);
+            CHECK(end.finished);
+            CHECK(end.milliseconds >= 0.0);
+            CHECK(start.points == end.points);
+            CHECK(end.points == (k < 2 ? object.scan().input_points : object.size()));
+            sum += end.milliseconds;
+        }
+        // The stages' times are the object's timings, split finer.
+        const PCCD::Preprocessing_times& t = object.timings();
+        CHECK(sum == Approx(t.kd_tree + t.outliers + t.graph + t.sampling_radius + t.cpsp + t.normals + t.hierarchy));
+        if (noise > 0.0) CHECK(wider); // the case this loop is for
+    }
 }

@@ -168,3 +168,14 @@ TEST_CASE("copies share the data and stay valid after the original is gone", "[p
     CHECK(copy.size() == 3);
     CHECK(copy.nearest(Eigen::Vector3d(6, 0, 0)).index == 1);
 }
+
+TEST_CASE("a range of points with a kernel object needs no point map", "[point_cloud]")
+{
+    const std::vector<Eigen::Vector3d> points{{0, 0, 0}, {1, 0, 0}, {0, 2, 0}, {0, 0, 3}};
+    const PCCD::Eigen_kernel<double> kernel;
+    const PCCD::Point_cloud<> with_kernel(points, kernel);
+    const PCCD::Point_cloud<> with_map(points, PCCD::Identity_point_map<Eigen::Vector3d>(), kernel);
+    CHECK(with_kernel.coordinates() == with_map.coordinates());
+    CHECK(with_kernel.size() == 4);
+    CHECK(with_kernel.k_nearest(Eigen::Vector3d(0, 1.9, 0), 1).front().index == 2);
+}

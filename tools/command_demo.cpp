@@ -5,6 +5,7 @@
 // two posed copies and their intersection curve (pccd-demo.png) and, when gnuplot is installed, its
 // table of query times (pccd-demo-times.png), and says where.
 #include "commands.h"
+#include "progress.h"
 #include "demo_data.h"
 #include "render_objects.h"
 
@@ -119,9 +120,7 @@ void run_demo(const Demo_options& options)
     std::printf("\n");
 
     start = Clock::now();
-    std::vector<Eigen::Vector3d> points(std::size_t(object.points.cols()));
-    for (std::size_t i = 0; i < points.size(); ++i) points[i] = object.points.col(Eigen::Index(i));
-    const PCCD::Point_cloud_object<> object_state(points);
+    const PCCD::Point_cloud_object<> object_state(object.points, with_progress({}, object.name));
     const auto& t = object_state.timings();
     std::printf("preprocessed object in %.0f ms (graph %.0f, r(P) %.0f, CPSP %.0f, normals %.0f)\n", ms_since(start),
                 t.graph, t.sampling_radius, t.cpsp, t.normals);

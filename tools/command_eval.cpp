@@ -3,6 +3,7 @@
 // a(x), or why f is undefined there. Preprocessing uses Point_cloud_object's defaults; the file's normals, when it has
 // them, are hints that orient the surface's normals (zero ones count as missing).
 #include "commands.h"
+#include "progress.h"
 
 #include <PCCD/IO/read_points.h>
 #include <PCCD/Point_cloud_object.h>
@@ -81,7 +82,8 @@ void register_eval(CLI::App& app)
         std::vector<Eigen::Vector3d> points;
         for (const std::string& text : *at) points.push_back(parse_point(text));
         const PCCD::Point_data data = PCCD::IO::read_points(*file);
-        const PCCD::Point_cloud_object<> object(data); // the file's normals, if any, are hints
+        // The file's normals, if any, are hints; progress on stderr when it is a terminal.
+        const PCCD::Point_cloud_object<> object(data, with_progress({}, *file));
         nlohmann::json result;
         result["file"] = *file;
         result["kernel"] = *kernel;

@@ -3,6 +3,7 @@
 // bandwidth, normals and the time of each stage). Later stages add their figures to the same JSON
 // object.
 #include "commands.h"
+#include "progress.h"
 
 #include <PCCD/Hierarchy/Sphere_covering.h>
 #include <PCCD/IO/read_points.h>
@@ -54,7 +55,7 @@ nlohmann::json describe_file(const std::string& path)
     // at the kernel's support radius, default bandwidth), the file's normals, if any, as hints that
     // orient the surface's normals where they are not zero.
     const PCCD::Point_cloud_object_options options;
-    const PCCD::Point_cloud_object<> object(data, options);
+    const PCCD::Point_cloud_object<> object(data, with_progress(options, path)); // progress on a terminal
     const PCCD::Point_cloud<>& cloud = object.cloud();
     const PCCD::Preprocessing_times& t = object.timings();
     out["timings_ms"]["kd_tree"] = t.kd_tree;

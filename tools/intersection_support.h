@@ -13,6 +13,8 @@
 
 #include <common/timing.h>
 
+#include "progress.h"
+
 #include <nlohmann/json.hpp>
 
 #include <chrono>
@@ -92,7 +94,7 @@ struct Prepared_object {
 inline Prepared_object prepare_object(const Object_points& input, const std::string& name)
 {
     const Clock::time_point start = Clock::now();
-    PCCD::Point_cloud_object<> object(input);
+    PCCD::Point_cloud_object<> object(input, with_progress({}, name));
     if (object.orientation().unoriented == object.size())
         throw PCCD::Invalid_input(name + ": no point has a surface normal: its " + std::to_string(object.size()) +
                                   " points are too few or too degenerate (e.g. all on one line) to make a surface");

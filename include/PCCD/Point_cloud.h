@@ -63,6 +63,15 @@ public:
     {
     }
 
+    /// Copies a range of points (any Point3 type) with a given kernel object: the constructor above
+    /// with the identity point map, which need not be spelled.
+    template <std::ranges::input_range Range>
+        requires Point3<std::ranges::range_value_t<Range>>
+    Point_cloud(const Range& points, const K& kernel)
+        : Point_cloud(points, Identity_point_map<std::ranges::range_value_t<Range>>(), kernel)
+    {
+    }
+
     /// Takes a 3 x N matrix of coordinates, one point per column.
     /// \throws Invalid_input as above.
     explicit Point_cloud(Coordinates coordinates, const K& kernel = K())
@@ -82,6 +91,10 @@ public:
     {
         return checked(to_coordinates(items, point_map));
     }
+
+    /// `coordinates`, checked as the constructor from a matrix checks them, without building the
+    /// kd-tree. \throws Invalid_input as the constructors.
+    static Coordinates checked_coordinates(Coordinates coordinates) { return checked(std::move(coordinates)); }
 
     /// The largest coordinate magnitude accepted, sqrt(max(FT)) / 4 (about 3.3e153 for double,
     /// 4.6e18 for float): beyond it squared distances could overflow.

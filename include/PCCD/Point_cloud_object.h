@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <concepts>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -103,6 +104,35 @@ public:
     {
     }
 
+    /// From a range of points (any Point3 type: Eigen vectors, CGAL points, ...) and options: the
+    /// constructor above with the identity point map, which need not be spelled.
+    template <std::ranges::input_range Range>
+        requires Point3<std::ranges::range_value_t<Range>>
+    Point_cloud_object(const Range& points, const Point_cloud_object_options& options)
+        : Point_cloud_object(points, Identity_point_map<std::ranges::range_value_t<Range>>(), options)
+    {
+    }
+
+    /// From the points in the columns of a 3 x N matrix (Surface_sample::points,
+    /// Triangle_mesh_sample::points, ...), as the constructors above.
+    /// \throws Invalid_input as above.
+    explicit Point_cloud_object(const Eigen::Matrix3Xd& points, const Point_cloud_object_options& options = {})
+        : Point_cloud_object(timed_cloud(points, options), std::nullopt, options)
+    {
+    }
+
+    /// As above, with one normal per point (column i of `normals` for column i of `points`), used as
+    /// hints as in the constructor with a normal map (zero or non-finite columns count as missing).
+    /// \throws Invalid_input when `normals` does not have one column per point, and as above.
+    /// (A template only so that `{...}` options in the second place never pick it.)
+    template <class Normals>
+        requires std::same_as<Normals, Eigen::Matrix3Xd>
+    Point_cloud_object(const Eigen::Matrix3Xd& points, const Normals& normals,
+                       const Point_cloud_object_options& options = {})
+        : Point_cloud_object(timed_cloud(points, options), checked_normals(points, normals), options)
+    {
+    }
+
     /// As above, but the normals `get(normal_map, item)` the user gives (e.g. read from a PLY file)
     /// are hints (orient_normals_with_hints()): each normal n(p_i) takes the sign of its point's
     /// given normal, and the points whose given normal is zero or not finite (missing) get theirs
@@ -116,6 +146,17 @@ public:
     Point_cloud_object(const Range& items, const PointMap& point_map, const NormalMap& normal_map,
                        const Point_cloud_object_options& options = {})
         : Point_cloud_object(timed_cloud(items, point_map, options), read_normals(items, normal_map), options)
+    {
+    }
+
+    /// From a range of points and a range of their normals (any Point3 types; normals[i] for
+    /// points[i]), as hints as in the constructor above: no point map or normal map to spell.
+    /// \throws Invalid_input when the ranges differ in length, and as above.
+    template <std::ranges::input_range Points, std::ranges::input_range Normals>
+        requires Point3<std::ranges::range_value_t<Points>> && Point3<std::ranges::range_value_t<Normals>>
+    Point_cloud_object(const Points& points, const Normals& normals, const Point_cloud_object_options& options = {})
+        : Point_cloud_object(timed_cloud(points, Identity_point_map<std::ranges::range_value_t<Points>>(), options),
+                             read_normals(normals, Identity_point_map<std::ranges::range_value_t<Normals>>()), options)
     {
     }
 
@@ -232,6 +273,30 @@ private:
     {
     }
 
+    /// Tells options.progress (if any) that `stage` starts, and, through finish(), that it ended.
+    class Stage {
+    public:
+        Stage(const Point_cloud_object_options& options, Preprocessing_stage stage, std::size_t points)
+            : m_options(options), m_stage(stage), m_points(points)
+        {
+            if (m_options.progress) m_options.progress(Preprocessing_progress{m_stage, false, 0.0, m_points});
+            m_start = Clock::now();
+        }
+        /// The stage's wall-clock time in milliseconds.
+        double finish()
+        {
+            const double ms = ms_since(m_start);
+            if (m_options.progress) m_options.progress(Preprocessing_progress{m_stage, true, ms, m_points});
+            return ms;
+        }
+
+    private:
+        const Point_cloud_object_options& m_options;
+        Preprocessing_stage m_stage;
+        std::size_t m_points;
+        Clock::time_point m_start;
+    };
+
     static double ms_since(Clock::time_point start)
     {
         return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -258,8 +323,23 @@ private:
     static Timed_cloud timed_cloud(const Range& items, const PointMap& point_map,
                                    const Point_cloud_object_options& options)
     {
-        const auto start = Clock::now();
-        auto coordinates = Point_cloud<K>::read_coordinates(items, point_map);
+        std::size_t n = 0;
+        if constexpr (std::ranges::sized_range<Range>) n = std::size_t(std::ranges::size(items));
+        Stage stage(options, Preprocessing_stage::kd_tree, n);
+        return ordered_cloud(Point_cloud<K>::read_coordinates(items, point_map), options, stage);
+    }
+
+    static Timed_cloud timed_cloud(const Eigen::Matrix3Xd& points, const Point_cloud_object_options& options)
+    {
+        Stage stage(options, Preprocessing_stage::kd_tree, std::size_t(points.cols()));
+        return ordered_cloud(Point_cloud<K>::checked_coordinates(points.template cast<FT>()), options, stage);
+    }
+
+    /// The cloud of the checked `coordinates` (and its kd-tree), in spatial order when the options
+    /// ask for it.
+    static Timed_cloud ordered_cloud(typename Point_cloud<K>::Coordinates coordinates,
+                                     const Point_cloud_object_options& options, Stage& stage)
+    {
         std::vector<std::uint32_t> input_index;
         if (options.spatial_order) {
             input_index = internal::spatial_order(coordinates);
@@ -269,7 +349,15 @@ private:
             coordinates = std::move(sorted);
         }
         Point_cloud<K> cloud(std::move(coordinates));
-        return {std::move(cloud), ms_since(start), std::move(input_index)};
+        return {std::move(cloud), stage.finish(), std::move(input_index)};
+    }
+
+    static Eigen::Matrix3Xd checked_normals(const Eigen::Matrix3Xd& points, const Eigen::Matrix3Xd& normals)
+    {
+        if (normals.cols() != points.cols())
+            throw Invalid_input(internal::concat("point cloud object: ", normals.cols(), " normals for ", points.cols(),
+                                                 " points (need one per point)"));
+        return normals;
     }
 
     template <class Range, class NormalMap>
@@ -291,17 +379,18 @@ private:
                           std::shared_ptr<const Close_pairs_shortest_paths> cpsp, double sampling_radius,
                           const Gaussian_weight& weight, Eigen::Matrix3Xd normals, Eigen::VectorXd domain,
                           Orientation_report orientation, bool normals_given, Scan_estimate scan,
-                          Preprocessing_times timings, const Point_cloud_hierarchy_options& hierarchy_options,
-                          Surface_fit fit, std::vector<std::uint32_t> input_index)
+                          Preprocessing_times timings, const Point_cloud_object_options& options,
+                          std::vector<std::uint32_t> input_index)
     {
         // The hierarchy's reach of a point is its domain radius: f is defined only that close to it
         // (doc/manual/hierarchy.md). Without a domain the hierarchy has no reaches (queries walk it flat).
         const Eigen::VectorXd reach = domain;
-        Geodesic_surface geodesic(Geodesic_distance<K>(cloud, cpsp), weight, normals, domain, fit);
-        Euclidean_surface euclidean(Euclidean_distance<K>(cloud), weight, std::move(normals), std::move(domain), fit);
-        const auto start = Clock::now();
-        Point_cloud_hierarchy hierarchy(cloud.coordinates(), reach, hierarchy_options);
-        timings.hierarchy = ms_since(start);
+        Geodesic_surface geodesic(Geodesic_distance<K>(cloud, cpsp), weight, normals, domain, options.surface_fit);
+        Euclidean_surface euclidean(Euclidean_distance<K>(cloud), weight, std::move(normals), std::move(domain),
+                                    options.surface_fit);
+        Stage stage(options, Preprocessing_stage::hierarchy, cloud.size());
+        Point_cloud_hierarchy hierarchy(cloud.coordinates(), reach, options.hierarchy);
+        timings.hierarchy = stage.finish();
         return Data{std::move(cloud),       std::move(graph),     std::move(cpsp),
                     sampling_radius,        orientation,          normals_given,
                     std::move(scan),        timings,              std::move(geodesic),
@@ -369,6 +458,7 @@ private:
         internal::check_domain_options(options.domain);
         internal::check_outlier_options(options.outliers);
         internal::check_noise_factor(options.bandwidth);
+        internal::check_threads(options.threads, "point cloud object: threads");
 
         // Point i of the cloud is point input_index[i] of those given; the normals given follow.
         std::vector<std::uint32_t> input_index = std::move(built.input_index);
@@ -382,69 +472,74 @@ private:
             given_normals = std::move(ordered);
         }
 
-        auto start = Clock::now();
-        options.sphere_of_influence.threads = options.knn.threads = options.sampling_radius.threads =
-            options.domain.threads = options.outliers.threads = options.threads;
+        // A stage's own thread count stands; an unset one takes the object's.
+        options = resolve_threads(std::move(options));
         Scan_estimate scan;
         scan.input_points = cloud.size();
         // One local-spacing pass serves the outlier test and, when no point was removed and both
         // use the same k, the domain radii below.
         std::optional<Local_spacing> spacing;
-        if (options.outliers.remove) {
-            spacing = local_spacing(cloud, options.outliers.neighbors, true, options.threads);
-            scan.outliers = find_outliers(*spacing, options.outliers);
-            remove_outliers(cloud, given_normals, scan.outliers);
-            keep_input_indices(input_index, scan.outliers);
-            if (!scan.outliers.empty()) spacing.reset(); // the cloud changed
+        {
+            Stage stage(options, Preprocessing_stage::outliers, cloud.size());
+            if (options.outliers.remove) {
+                spacing = local_spacing(cloud, options.outliers.neighbors, true, options.outliers.threads);
+                scan.outliers = find_outliers(*spacing, options.outliers);
+                remove_outliers(cloud, given_normals, scan.outliers);
+                keep_input_indices(input_index, scan.outliers);
+                if (!scan.outliers.empty()) spacing.reset(); // the cloud changed
+            }
+            timings.outliers = stage.finish();
         }
-        timings.outliers = ms_since(start);
 
-        start = Clock::now();
-        auto graph = std::make_shared<const Proximity_graph>(options.graph == Graph_kind::knn
-                                                                 ? knn_graph(cloud, options.knn)
-                                                                 : sphere_of_influence_graph(cloud, options.sphere_of_influence));
-        timings.graph = ms_since(start);
+        std::shared_ptr<const Proximity_graph> graph;
+        {
+            Stage stage(options, Preprocessing_stage::graph, cloud.size());
+            graph = std::make_shared<const Proximity_graph>(options.graph == Graph_kind::knn
+                                                                ? knn_graph(cloud, options.knn)
+                                                                : sphere_of_influence_graph(cloud, options.sphere_of_influence));
+            timings.graph = stage.finish();
+        }
 
-        start = Clock::now();
+        Stage radius_stage(options, Preprocessing_stage::sampling_radius, cloud.size());
         const double r = PCCD::sampling_radius(cloud, options.sampling_radius);
-        timings.sampling_radius = ms_since(start);
         Gaussian_weight weight = gaussian_weight(r, options.bandwidth);
+        timings.sampling_radius = radius_stage.finish();
 
         std::shared_ptr<const Close_pairs_shortest_paths> cpsp;
         Normal_estimate estimate;
         // At most twice: a second time when the noise estimate asks for a wider kernel than the
         // sampling radius alone (automatic bandwidth only).
         for (int pass = 0; pass < 2; ++pass) {
-            start = Clock::now();
+            Stage cpsp_stage(options, Preprocessing_stage::cpsp_map, cloud.size());
             // The map must hold every point within the kernel's support radius R; its bound is
             // support * r, so support = R / r (eta itself for the automatic bandwidth).
             cpsp = std::make_shared<const Close_pairs_shortest_paths>(
                 *graph, r, Cpsp_options{.support = weight.support_radius() / r, .threads = options.threads});
-            timings.cpsp += ms_since(start);
-            start = Clock::now();
+            timings.cpsp += cpsp_stage.finish();
+            Stage normals_stage(options, Preprocessing_stage::normals, cloud.size());
             estimate = estimate_normals(Geodesic_distance<K>(cloud, cpsp), weight, options.threads);
-            timings.normals += ms_since(start);
             scan.noise = PCCD::noise_estimate(estimate);
+            timings.normals += normals_stage.finish();
             const std::optional<Gaussian_weight> wider = noise_aware_weight(weight, scan.noise, options.bandwidth);
             if (!wider || pass == 1) break;
             weight = *wider;
         }
 
-        start = Clock::now();
+        Stage orientation_stage(options, Preprocessing_stage::orientation, cloud.size());
         const Orientation_report orientation =
             given_normals ? orient_normals_with_hints(*graph, cloud.coordinates(), estimate.normals, *given_normals)
                           : orient_normals(*graph, cloud.coordinates(), estimate.normals);
-        timings.normals += ms_since(start);
-        start = Clock::now();
+        timings.normals += orientation_stage.finish();
+        Stage domain_stage(options, Preprocessing_stage::domain, cloud.size());
         const bool reuse = spacing && spacing->k == std::min<std::size_t>(options.domain.neighbors, cloud.size() - 1);
         Eigen::VectorXd domain = reuse ? surface_domain_radii(*spacing, options.domain)
                                        : surface_domain_radii(cloud, options.domain);
-        timings.outliers += ms_since(start);
+        timings.outliers += domain_stage.finish();
 
         return std::make_shared<const Data>(make_data(std::move(cloud), std::move(graph), std::move(cpsp), r, weight,
                                                       std::move(estimate.normals), std::move(domain), orientation,
                                                       given_normals.has_value(), std::move(scan), timings,
-                                                      options.hierarchy, options.surface_fit, std::move(input_index)));
+                                                      options, std::move(input_index)));
     }
 
     std::shared_ptr<const Data> m_data;

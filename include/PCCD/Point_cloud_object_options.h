@@ -1,11 +1,15 @@
 // PCCD/Point_cloud_object_options.h -- what Point_cloud_object's preprocessing can be told and
 // what it reports besides the object: Point_cloud_object_options (every stage's options, with
-// their defaults), Preprocessing_times and Scan_estimate. Implements doc/manual/surface.md, "One
+// their defaults, and a progress callback), resolve_threads() (which thread count each stage
+// uses), Preprocessing_stage, Preprocessing_progress, Preprocessing_times and Scan_estimate. Implements doc/manual/surface.md, "One
 // call: Point_cloud_object" and "Scans: where the surface is defined, noise and outliers".
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <initializer_list>
+#include <optional>
 #include <vector>
 
 #include <PCCD/Hierarchy/Point_cloud_hierarchy.h>
@@ -18,6 +22,47 @@
 #include <PCCD/sampling_radius.h>
 
 namespace PCCD {
+
+/// A stage of Point_cloud_object's preprocessing. They run in this order; cpsp_map and normals run
+/// a second time when the noise estimate asks for a wider kernel (Bandwidth_options::noise_factor).
+enum class Preprocessing_stage : std::uint8_t {
+    kd_tree,         ///< the points are read and their kd-tree built
+    outliers,        ///< isolated outliers found and left out (Outlier_options)
+    graph,           ///< the proximity graph
+    sampling_radius, ///< r(P) and the kernel bandwidth
+    cpsp_map,        ///< the close pairs shortest paths within the kernel's support
+    normals,         ///< the unoriented normals and the noise estimate
+    orientation,     ///< the normals' orientation
+    domain,          ///< the domain radii of the surface (Surface_domain_options)
+    hierarchy,       ///< the point cloud hierarchy
+};
+
+/// The stage's name in words ("kd-tree", "CPSP map", ...).
+constexpr const char* to_string(Preprocessing_stage stage)
+{
+    switch (stage) {
+    case Preprocessing_stage::kd_tree: return "kd-tree";
+    case Preprocessing_stage::outliers: return "outliers";
+    case Preprocessing_stage::graph: return "proximity graph";
+    case Preprocessing_stage::sampling_radius: return "sampling radius";
+    case Preprocessing_stage::cpsp_map: return "CPSP map";
+    case Preprocessing_stage::normals: return "normals";
+    case Preprocessing_stage::orientation: return "orientation";
+    case Preprocessing_stage::domain: return "domain";
+    case Preprocessing_stage::hierarchy: return "hierarchy";
+    }
+    return "unknown stage";
+}
+
+/// What Point_cloud_object_options::progress is told: a stage starts (finished == false,
+/// milliseconds == 0) or has ended (finished == true, milliseconds: its wall-clock time).
+struct Preprocessing_progress {
+    Preprocessing_stage stage = Preprocessing_stage::kd_tree;
+    bool finished = false;
+    double milliseconds = 0.0;
+    /// The number of points the stage works on (before outlier removal for kd_tree and outliers).
+    std::size_t points = 0;
+};
 
 /// Options of Point_cloud_object. Every field has a documented default; use designated
 /// initializers: `{.graph = Graph_kind::knn, .bandwidth = {.eta = 2.5}}`.
@@ -51,10 +96,30 @@ struct Point_cloud_object_options {
     /// 10^6 points"). Point_cloud_object::input_index() maps each point back to its index among the
     /// points given.
     bool spatial_order = true;
-    /// Worker threads of every stage; 0 (default) uses all available. Ignored without TBB. The
-    /// result does not depend on it.
-    unsigned threads = 0;
+    /// Worker threads of the stages, >= 1 (at most 4096). Unset (default): all available. A
+    /// stage whose own options set `threads` (knn.threads, sphere_of_influence.threads,
+    /// sampling_radius.threads, domain.threads, outliers.threads) keeps its own count; a stage
+    /// whose `threads` is unset uses this one; the CPSP map and the normals, which have no options
+    /// here, use this one. Ignored without TBB. The result does not depend on it.
+    std::optional<unsigned> threads = std::nullopt;
+    /// Called at the start and at the end of every preprocessing stage, in order (see
+    /// Preprocessing_progress), on the thread that builds the object. Empty (default): nothing is
+    /// called. An exception it throws leaves the constructor. The pccd tool prints these on a
+    /// terminal.
+    std::function<void(const Preprocessing_progress&)> progress = {};
 };
+
+/// The options as the preprocessing stages use them: every stage's `threads` that is unset takes
+/// options.threads (unset too when that is unset: all available threads); a stage's own count
+/// stands. Point_cloud_object applies this rule; it is a function so that the rule can be seen.
+inline Point_cloud_object_options resolve_threads(Point_cloud_object_options options)
+{
+    for (std::optional<unsigned>* stage : {&options.sphere_of_influence.threads, &options.knn.threads,
+                                           &options.sampling_radius.threads, &options.domain.threads,
+                                           &options.outliers.threads})
+        if (!*stage) *stage = options.threads;
+    return options;
+}
 
 /// Wall-clock time of each preprocessing stage, in milliseconds (0 for a loaded object, except
 /// kd_tree, which is rebuilt on load).

@@ -18,6 +18,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <numbers>
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -52,9 +53,10 @@ struct Sampling_radius_options {
     double disk_factor = 3.0;
     /// Seed of the Monte-Carlo points. Default 1.
     std::uint64_t seed = 1;
-    /// Worker threads; 0 (default) uses all available. Ignored without TBB. The result does not
-    /// depend on it.
-    unsigned threads = 0;
+    /// Worker threads, >= 1. Unset (default): all available threads; as a stage of
+    /// Point_cloud_object, the object's `threads`. Ignored without TBB. The result does not depend
+    /// on it.
+    std::optional<unsigned> threads = std::nullopt;
 };
 
 namespace internal {

@@ -5,6 +5,8 @@
 // "Objects").
 #include "pccd_python.h"
 
+#include <pybind11/stl.h>
+
 #include <PCCD/Error.h>
 #include <PCCD/Intersection/do_intersect_many.h>
 
@@ -57,7 +59,7 @@ PCCD::Point_cloud_object_options object_options(const py::kwargs& kwargs)
         {"knn_k", [](auto& o, const py::handle& v, const std::string& k) { o.knn.k = option_value<unsigned>(v, k); }},
         {"eta", [](auto& o, const py::handle& v, const std::string& k) { o.bandwidth.eta = option_value<double>(v, k); }},
         {"theta_eps", [](auto& o, const py::handle& v, const std::string& k) { o.bandwidth.theta_eps = option_value<double>(v, k); }},
-        {"bandwidth", [](auto& o, const py::handle& v, const std::string& k) { o.bandwidth.bandwidth = option_value<double>(v, k); }},
+        {"bandwidth", [](auto& o, const py::handle& v, const std::string& k) { o.bandwidth.bandwidth = option_value<std::optional<double>>(v, k); }},
         {"noise_factor", [](auto& o, const py::handle& v, const std::string& k) { o.bandwidth.noise_factor = option_value<double>(v, k); }},
         {"surface_fit",
          [](auto& o, const py::handle& v, const std::string& k) {
@@ -78,10 +80,10 @@ PCCD::Point_cloud_object_options object_options(const py::kwargs& kwargs)
         {"spatial_order", [](auto& o, const py::handle& v, const std::string& k) { o.spatial_order = option_value<bool>(v, k); }},
         {"threads",
          [](auto& o, const py::handle& v, const std::string& k) {
-             o.threads = option_value<unsigned>(v, k);
-             if (o.threads > PCCD::Batch_options::max_threads)
-                 throw py::value_error("Object(): threads " + std::to_string(o.threads) + " exceeds the limit " +
-                                       std::to_string(PCCD::Batch_options::max_threads) + " (0: all available)");
+             o.threads = option_value<std::optional<unsigned>>(v, k);
+             if (o.threads && *o.threads > PCCD::Batch_options::max_threads)
+                 throw py::value_error("Object(): threads " + std::to_string(*o.threads) + " exceeds the limit " +
+                                       std::to_string(PCCD::Batch_options::max_threads) + " (None: all available)");
          }},
     };
     PCCD::Point_cloud_object_options options;
@@ -161,7 +163,8 @@ normals : array_like, optional
     theta_eps : float
         Kernel weights below it are ignored (default 0.01).
     bandwidth : float
-        A kernel bandwidth h given by the user; 0 (default) chooses it from eta and r(P).
+        A kernel bandwidth h given by the user, finite and > 0; None (default) chooses it from
+        eta and r(P).
     noise_factor : float
         Noise-aware support: the support radius is at least noise_factor times the noise
         estimate (default 15; 0 disables it).
@@ -185,7 +188,7 @@ normals : array_like, optional
         Store the points in a spatial (Morton) order, near in memory when near in space (default
         True; ``input_indices`` maps them back to the points given).
     threads : int
-        Worker threads of the preprocessing, at most 4096; 0 (default) uses all. The result does
+        Worker threads of the preprocessing, 1 to 4096; None (default) uses all. The result does
         not depend on it.
 
 Raises

@@ -58,7 +58,7 @@ struct Query_arguments {
     std::optional<std::size_t> partner_candidates;
     std::optional<double> epsilon_factor;
     // Batch functions only.
-    unsigned threads = 0;
+    std::optional<unsigned> threads;
     std::uint64_t first_index = 0;
 };
 
@@ -198,7 +198,7 @@ Result query(const Object& a, const py::handle& pose_a, const Object& b, const p
     });
 }
 
-std::vector<Result> many(const py::iterable& pairs, unsigned threads, std::uint64_t first_index, bool first_hit,
+std::vector<Result> many(const py::iterable& pairs, std::optional<unsigned> threads, std::uint64_t first_index, bool first_hit,
                          const Query_parameters& q)
 {
     std::vector<PCCD::Posed_pair<Object>> list;
@@ -404,7 +404,7 @@ pairs : iterable of tuple
     Tuples (object_a, pose_a, object_b, pose_b), poses as in do_intersect (3x4, 4x4 or None). The
     same object may appear in any number of pairs.
 threads : int, optional
-    Worker threads, at most 4096; 0 (default) uses all available. The results do not depend on
+    Worker threads, 1 to 4096; None (default) uses all available. The results do not depend on
     it.
 first_index : int, optional
     Index of pairs[0] in a larger batch split into chunks (default 0): pair i is seeded as pair

@@ -592,10 +592,10 @@ TEST_CASE("classify_pose: the grazing rule", "[exact][separation]")
 TEST_CASE("exact meshes: the bunny against copies of itself", "[exact][mesh][data]")
 {
     Triangle_mesh_data data;
-    if (!read_data_mesh("bunny00.off", data)) {
-        WARN("PCCD_DATA_DIR is empty (libcgal-demo not installed): using a procedural ellipsoid for the bunny");
-        data = icosphere(4, Vector3::Zero(), 1.0, {1.0, 0.7, 0.45});
-    }
+    // Without the data the case is skipped, not run on a stand-in: it is the bunny's test (the
+    // procedural meshes have their own cases above).
+    if (!read_data_mesh("bunny00.off", data))
+        PCCD_SKIP_TEST("bunny00.off of libcgal-demo not found (PCCD_DATA_DIR is empty)");
     normalize(data);
     const Exact_mesh bunny(data);
     REQUIRE(bunny.encloses_volume());

@@ -209,5 +209,6 @@ TEST_CASE("Batch queries reject bad input with Invalid_input", "[intersection][b
         CHECK_THROWS_WITH(PCCD::do_intersect_many(pairs, {.threads = 1'000'000}),
                           Contains("threads 1000000 exceeds the limit 4096"));
         CHECK_NOTHROW(PCCD::do_intersect_many(pairs, {.threads = PCCD::Batch_options::max_threads}));
+        CHECK_THROWS_WITH(PCCD::do_intersect_many(pairs, {.threads = 0}), Contains("threads = 0"));
     }
 }

@@ -215,7 +215,7 @@ TEST_CASE("local spacing is the k-th nearest other point's distance, with the k 
 
     for (unsigned k : {1u, 3u, 6u}) {
         const PCCD::Local_spacing with = PCCD::local_spacing(cloud, k, true, 1);
-        const PCCD::Local_spacing without = PCCD::local_spacing(cloud, k, false, 0);
+        const PCCD::Local_spacing without = PCCD::local_spacing(cloud, k, false);
         REQUIRE(with.k == k);
         REQUIRE(with.spacing.size() == p.cols());
         REQUIRE(with.neighbors.size() == std::size_t(p.cols()) * k);

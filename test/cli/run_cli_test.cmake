@@ -7,10 +7,10 @@
 cmake_minimum_required(VERSION 3.22)
 
 # pccd_run(OK|FAIL ARGS <pccd arguments>... [MATCH <regex>...] [NO_MATCH <regex>...]
-#          [STDOUT_MATCH <regex>...]): MATCH and NO_MATCH look at stdout + stderr, STDOUT_MATCH at
-# stdout alone.
+#          [STDOUT_MATCH <regex>...] [STDERR_EMPTY]): MATCH and NO_MATCH look at stdout + stderr,
+# STDOUT_MATCH at stdout alone; STDERR_EMPTY requires that nothing was written to stderr.
 function(pccd_run expect)
-  cmake_parse_arguments(R "" "" "ARGS;MATCH;NO_MATCH;STDOUT_MATCH" ${ARGN})
+  cmake_parse_arguments(R "STDERR_EMPTY" "" "ARGS;MATCH;NO_MATCH;STDOUT_MATCH" ${ARGN})
   execute_process(COMMAND ${PCCD} ${R_ARGS} WORKING_DIRECTORY ${WORK}
                   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   string(REPLACE ";" " " shown "${R_ARGS}")
@@ -36,6 +36,9 @@ function(pccd_run expect)
       message(FATAL_ERROR "output matches what it must not: ${regex}")
     endif()
   endforeach()
+  if(R_STDERR_EMPTY AND NOT "${err}" STREQUAL "")
+    message(FATAL_ERROR "stderr is not empty")
+  endif()
   set(PCCD_STDOUT "${out}" PARENT_SCOPE)
 endfunction()
 
@@ -197,6 +200,29 @@ elseif(CASE STREQUAL "demo_pictures")
   if(GNUPLOT)
     pccd_check_png(demo-times.png 800 480)
   endif()
+elseif(CASE STREQUAL "progress_not_a_terminal")
+  # stderr is a pipe here: the preprocessing progress stays off, stderr stays empty.
+  pccd_run(OK ARGS info sphere.xyz STDERR_EMPTY)
+  pccd_run(OK ARGS collide sphere.xyz torus.ply --transform-b ${shift_1} STDERR_EMPTY)
+  pccd_run(OK ARGS bench torus.ply --rotations 1 --distances 0,2.5 STDERR_EMPTY)
+elseif(CASE STREQUAL "progress_terminal")
+  # The same command on a pseudo-terminal (util-linux's script): every stage is named while it runs.
+  find_program(SCRIPT script)
+  if(NOT SCRIPT)
+    message("PCCD_CLI_TEST_SKIPPED: util-linux's script (a pseudo-terminal) not found")
+    return()
+  endif()
+  execute_process(COMMAND ${SCRIPT} -qec "'${PCCD}' info sphere.xyz" /dev/null WORKING_DIRECTORY ${WORK}
+                  INPUT_FILE /dev/null RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message("$ script -qec 'pccd info sphere.xyz' /dev/null\n[exit ${rc}]\n${out}${err}")
+  if(NOT rc STREQUAL "0")
+    message(FATAL_ERROR "expected exit code 0, got ${rc}")
+  endif()
+  foreach(stage "kd-tree" "proximity graph" "sampling radius" "CPSP map" "normals" "orientation" "domain" "hierarchy")
+    if(NOT out MATCHES "pccd: sphere.xyz \\(2000 points\\): ${stage} \\.\\.\\.")
+      message(FATAL_ERROR "the progress does not name the stage ${stage}")
+    endif()
+  endforeach()
 elseif(CASE STREQUAL "collide_bunny")
   if(DEFINED ENV{PCCD_DATA_DIR} AND NOT "$ENV{PCCD_DATA_DIR}" STREQUAL "")
     set(DATA_DIR "$ENV{PCCD_DATA_DIR}")

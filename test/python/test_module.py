@@ -308,6 +308,24 @@ def test_batch_rejects_bad_pairs(shapes):
         pccd.do_intersect_many([(sphere, None, torus, None)], threads=10**6)
     with pytest.raises(ValueError, match="threads 1000000 exceeds the limit 4096"):
         pccd.Object(sphere_points(100), threads=10**6)
+    # 0 is no thread count (None, the default, uses all available threads).
+    with pytest.raises(ValueError, match="threads = 0"):
+        pccd.do_intersect_many([(sphere, None, torus, None)], threads=0)
+    with pytest.raises(ValueError, match="threads = 0"):
+        pccd.Object(sphere_points(100), threads=0)
+    assert len(pccd.do_intersect_many([(sphere, None, torus, None)], threads=None)) == 1
+
+
+def test_bandwidth_is_automatic_unless_given():
+    """bandwidth=None (the default) is eta r(P) / sqrt(-ln theta_eps); a given one is used as it is
+    and must be finite and > 0 (0 no longer means automatic)."""
+    points = sphere_points(400)
+    automatic = pccd.Object(points, bandwidth=None, noise_factor=0.0)  # no noise-aware widening
+    assert automatic.bandwidth == pytest.approx(3.0 * automatic.sampling_radius / np.sqrt(-np.log(0.01)))
+    assert pccd.Object(points, bandwidth=0.2).bandwidth == 0.2
+    for h in (0.0, -1.0, float("nan")):
+        with pytest.raises(ValueError, match="the given bandwidth is"):
+            pccd.Object(points, bandwidth=h)
 
 
 def test_batch_releases_the_gil(shapes):

@@ -17,6 +17,7 @@
 
 #include <array>
 #include <cmath>
+#include <optional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -113,7 +114,7 @@ TEST_CASE("options: bandwidth (eta, theta_eps, h)", "[robustness]")
         INFO("theta_eps " << theta);
         require_rejected({.bandwidth = {.theta_eps = theta}}, {"bandwidth: theta_eps is", "must lie in (0, 1)"});
     }
-    for (const double h : {-1.0, not_a_number, infinity, -infinity}) {
+    for (const double h : {0.0, -1.0, not_a_number, infinity, -infinity}) {
         INFO("h " << h);
         require_rejected({.bandwidth = {.bandwidth = h}}, {"bandwidth: the given bandwidth is", "must be finite and > 0"});
     }
@@ -143,16 +144,24 @@ TEST_CASE("options: bandwidth (eta, theta_eps, h)", "[robustness]")
 
 TEST_CASE("options: threads", "[robustness]")
 {
-    // 0 means "all available", any other count is valid (capped by TBB); the result never depends on it.
+    // Unset means "all available", any count >= 1 is valid (capped by TBB); the result never
+    // depends on it. 0 is refused: it is no count of threads.
     const Object reference = build({.threads = 1});
-    for (const unsigned threads : {0u, 2u, 64u}) {
-        INFO("threads " << threads);
+    for (const std::optional<unsigned> threads : {std::optional<unsigned>(), std::optional<unsigned>(2u),
+                                                  std::optional<unsigned>(64u)}) {
+        INFO("threads " << threads.value_or(0));
         const Object object = build({.threads = threads});
         CHECK(object.graph() == reference.graph());
         CHECK(object.cpsp() == reference.cpsp());
         CHECK(object.sampling_radius() == reference.sampling_radius());
         CHECK(object.normals() == reference.normals());
     }
+    require_rejected({.threads = 0}, {"threads = 0", "leave it unset"});
+    require_rejected({.sphere_of_influence = {.threads = 0}}, {"threads = 0", "leave it unset"});
+    require_invalid_input([] { (void)PCCD::sampling_radius(PCCD::Point_cloud<>(std::vector<Eigen::Vector3d>{
+                                                                {0, 0, 0}, {1, 0, 0}, {0, 1, 0}}),
+                                                            {.threads = 0}); },
+                          {"threads = 0"});
 }
 
 TEST_CASE("transforms: scaling, shear, reflection, NaN and infinite entries", "[robustness]")

@@ -56,9 +56,10 @@ struct Cpsp_options {
     bool use_virtual_edges = false;
     /// The bounded Dijkstra implementation (default: the faster, hand-written one).
     Bounded_dijkstra algorithm = Bounded_dijkstra::hand_written;
-    /// Worker threads; 0 (default) uses all available. Ignored without TBB. The result does not
-    /// depend on it.
-    unsigned threads = 0;
+    /// Worker threads, >= 1. Unset (default): all available threads; as a stage of
+    /// Point_cloud_object, the object's `threads`. Ignored without TBB. The result does not depend
+    /// on it.
+    std::optional<unsigned> threads = std::nullopt;
 };
 
 /// The CPSP map of a proximity graph: for every point p, the list of points q with geodesic

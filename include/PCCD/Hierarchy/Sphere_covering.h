@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -41,7 +42,8 @@ public:
     /// \throws Invalid_input if subsample is 0 or above 255.
     /// Complexity: O(N K log N) time for N points, K = subsample, in parallel over nodes with TBB;
     /// O(nodes K) space.
-    explicit Sphere_covering(const Point_cloud_hierarchy& hierarchy, std::size_t subsample = 8, unsigned threads = 0)
+    explicit Sphere_covering(const Point_cloud_hierarchy& hierarchy, std::size_t subsample = 8,
+                             std::optional<unsigned> threads = std::nullopt)
         : m_subsample(subsample)
     {
         if (subsample == 0 || subsample > 255)

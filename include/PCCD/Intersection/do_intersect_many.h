@@ -40,9 +40,9 @@ struct Batch_options {
     /// The largest `threads` accepted: TBB crashes when asked for an arena of a few hundred thousand
     /// threads, so absurd requests are refused with Invalid_input instead.
     static constexpr unsigned max_threads = internal::max_worker_threads;
-    /// Worker threads, at most max_threads; 0 (default) uses all available. Ignored without TBB
+    /// Worker threads, in [1, max_threads]. Unset (default): all available. Ignored without TBB
     /// (the pairs are then answered one after the other).
-    unsigned threads = 0;
+    std::optional<unsigned> threads = std::nullopt;
     /// The index of the first pair in a larger batch that was split into chunks (e.g. to spread it
     /// over several machines): pair i of the call is seeded as pair first_index + i of the whole,
     /// so the chunks' results together equal those of the whole batch. Default 0.
@@ -73,9 +73,11 @@ std::vector<Intersection_result> run_many(std::span<const Posed_pair<A, B>> pair
     // Everything that does not depend on the pair is checked once, before any work.
     check_options(options, function);
     policy.check();
-    if (batch.threads > Batch_options::max_threads)
-        throw Invalid_input(concat(function, ": threads ", batch.threads, " exceeds the limit ", Batch_options::max_threads,
-                                   " (0: all available)"));
+    if (batch.threads && *batch.threads > Batch_options::max_threads)
+        throw Invalid_input(concat(function, ": threads ", *batch.threads, " exceeds the limit ", Batch_options::max_threads,
+                                   " (leave it unset for all available threads)"));
+    if (batch.threads && *batch.threads == 0)
+        throw Invalid_input(concat(function, ": threads = 0; a thread count must be >= 1 (leave it unset for all available threads)"));
     for (std::size_t i = 0; i < pairs.size(); ++i)
         if (pairs[i].a == nullptr || pairs[i].b == nullptr)
             throw Invalid_input(concat(function, ": pair ", i, " has no object ", pairs[i].a == nullptr ? "a" : "b",

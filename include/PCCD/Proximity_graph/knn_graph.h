@@ -5,6 +5,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include <PCCD/Error.h>
@@ -23,9 +25,10 @@ struct Knn_graph_options {
     unsigned k = 8;
     /// The long-edge test marking edges virtual (default factor 4).
     Long_edge_options long_edges = {};
-    /// Worker threads; 0 (default) uses all available. Ignored without TBB. The result does not
-    /// depend on it.
-    unsigned threads = 0;
+    /// Worker threads, >= 1. Unset (default): all available threads; as a stage of
+    /// Point_cloud_object, the object's `threads`. Ignored without TBB. The result does not depend
+    /// on it.
+    std::optional<unsigned> threads = std::nullopt;
 };
 
 /// Builds the symmetric k-NN graph of `cloud`: i and j are joined when j is among the k nearest

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <PCCD/Error.h>
@@ -26,9 +27,10 @@ struct Sphere_of_influence_graph_options {
     unsigned r = 3;
     /// The long-edge test marking edges virtual (default factor 4).
     Long_edge_options long_edges = {};
-    /// Worker threads; 0 (default) uses all available. Ignored without TBB. The result does not
-    /// depend on it.
-    unsigned threads = 0;
+    /// Worker threads, >= 1. Unset (default): all available threads; as a stage of
+    /// Point_cloud_object, the object's `threads`. Ignored without TBB. The result does not depend
+    /// on it.
+    std::optional<unsigned> threads = std::nullopt;
 };
 
 /// Builds the r-SIG of `cloud`: points i and j are joined when |p_i - p_j| <= d_i + d_j, d_i the

@@ -191,8 +191,9 @@ public:
     std::optional<double> value_at(Index i) const { return evaluate_at(i).value_if_defined(); }
 
     /// Evaluates every point of `points` into `out` (out[k] for points[k]), in parallel when TBB is
-    /// available (`threads` workers, 0: all). \pre out.size() == points.size()
-    void evaluate(std::span<const Eigen::Vector3d> points, std::span<Surface_evaluation> out, unsigned threads = 0) const
+    /// available (`threads` workers >= 1, unset: all). \pre out.size() == points.size()
+    void evaluate(std::span<const Eigen::Vector3d> points, std::span<Surface_evaluation> out,
+                  std::optional<unsigned> threads = std::nullopt) const
     {
         PCCD_precondition_msg(out.size() == points.size(), "WLS surface: batch output size differs from input size");
         for_blocks(points.size(), threads, [&](std::size_t k) { out[k] = evaluate(points[k]); });
@@ -200,7 +201,8 @@ public:
 
     /// Evaluates every cloud point of `indices` into `out`. \pre out.size() == indices.size() and
     /// every index < size()
-    void evaluate_at(std::span<const Index> indices, std::span<Surface_evaluation> out, unsigned threads = 0) const
+    void evaluate_at(std::span<const Index> indices, std::span<Surface_evaluation> out,
+                     std::optional<unsigned> threads = std::nullopt) const
     {
         PCCD_precondition_msg(out.size() == indices.size(), "WLS surface: batch output size differs from input size");
         for_blocks(indices.size(), threads, [&](std::size_t k) { out[k] = evaluate_at(indices[k]); });
@@ -279,7 +281,7 @@ private:
     }
 
     template <class Body>
-    static void for_blocks(std::size_t n, unsigned threads, const Body& body)
+    static void for_blocks(std::size_t n, std::optional<unsigned> threads, const Body& body)
     {
         internal::with_threads(threads, [&] {
             internal::parallel_for_ranges(n, 256, [&](std::size_t begin, std::size_t end) {

@@ -20,9 +20,10 @@ struct Bandwidth_options {
     double eta = 3.0;
     /// theta_eps: weights below it are ignored. Default 1e-2. Must lie in (0, 1).
     double theta_eps = 1e-2;
-    /// A bandwidth h given by the user (length unit of the cloud): when > 0 it is used as it is and
-    /// eta and r(P) are ignored. Default 0 (automatic).
-    double bandwidth = 0.0;
+    /// A bandwidth h given by the user (length unit of the cloud), used as it is: eta, r(P) and
+    /// noise_factor are then ignored. Unset (default): automatic, eta r(P) / sqrt(-ln theta_eps).
+    /// When set: finite and > 0.
+    std::optional<double> bandwidth = std::nullopt;
     /// Noise-aware support (automatic bandwidth only): the support radius is at least
     /// noise_factor * sigma, sigma the cloud's noise estimate (noise_estimate()), so that the fit
     /// keeps averaging over enough points when the noise is heavy. Default 15, measured with the
@@ -47,18 +48,18 @@ inline void check_noise_factor(const Bandwidth_options& options)
 
 } // namespace internal
 
-/// h = eta r / sqrt(-ln theta_eps), or options.bandwidth when it is > 0.
+/// h = eta r / sqrt(-ln theta_eps), or options.bandwidth when it is set.
 /// \throws Invalid_input if an option is out of range or `sampling_radius` is not finite and > 0
 ///         (when it is needed).
 inline double kernel_bandwidth(double sampling_radius, const Bandwidth_options& options = {})
 {
     if (!(std::isgreater(options.theta_eps, 0.0) && std::isless(options.theta_eps, 1.0)))
         throw Invalid_input(internal::concat("bandwidth: theta_eps is ", options.theta_eps, "; it must lie in (0, 1)"));
-    if (options.bandwidth != 0.0) {
-        if (!(std::isfinite(options.bandwidth) && options.bandwidth > 0.0))
-            throw Invalid_input(internal::concat("bandwidth: the given bandwidth is ", options.bandwidth,
-                                                 "; it must be finite and > 0 (or 0 for automatic)"));
-        return options.bandwidth;
+    if (options.bandwidth) {
+        if (!(std::isfinite(*options.bandwidth) && *options.bandwidth > 0.0))
+            throw Invalid_input(internal::concat("bandwidth: the given bandwidth is ", *options.bandwidth,
+                                                 "; it must be finite and > 0 (leave it unset for the automatic value)"));
+        return *options.bandwidth;
     }
     if (!(std::isfinite(options.eta) && options.eta > 0.0))
         throw Invalid_input(internal::concat("bandwidth: eta is ", options.eta, "; it must be finite and > 0"));
@@ -75,7 +76,7 @@ inline std::optional<Gaussian_weight> noise_aware_weight(const Gaussian_weight& 
                                                          const Bandwidth_options& options = {})
 {
     internal::check_noise_factor(options);
-    if (options.bandwidth != 0.0 || !(std::isfinite(sigma) && sigma > 0.0)) return std::nullopt;
+    if (options.bandwidth || !(std::isfinite(sigma) && sigma > 0.0)) return std::nullopt;
     const double support = options.noise_factor * sigma;
     if (!(support > double(weight.support_radius()))) return std::nullopt;
     return Gaussian_weight(support / std::sqrt(-std::log(double(weight.threshold()))), weight.threshold());

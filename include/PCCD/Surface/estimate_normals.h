@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -56,14 +57,15 @@ inline double noise_estimate(const Normal_estimate& estimate)
 ///
 /// \tparam Distance a model of SurfaceDistance.
 /// \tparam Weight a model of SurfaceWeight.
-/// \param threads worker threads (0: all available); ignored without TBB. The result does not
+/// \param threads worker threads, >= 1 (unset: all available); ignored without TBB. The result does not
 ///        depend on it.
 /// \throws Invalid_input if the weight's support radius exceeds `distance.max_radius()` (beyond a
 ///         relative 1e-12 of rounding).
 /// Complexity: N neighbour enumerations (O(N k) with a CPSP map). Thread safety: reads its
 /// arguments only.
 template <SurfaceDistance Distance, SurfaceWeight Weight>
-Normal_estimate estimate_normals(const Distance& distance, const Weight& weight, unsigned threads = 0)
+Normal_estimate estimate_normals(const Distance& distance, const Weight& weight,
+                                 std::optional<unsigned> threads = std::nullopt)
 {
     const double support = double(weight.support_radius());
     if (support > double(distance.max_radius()) * (1.0 + 1e-12))

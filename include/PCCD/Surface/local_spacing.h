@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -32,7 +33,8 @@ struct Local_spacing {
 /// \throws Invalid_input if k == 0 or the cloud has fewer than two points.
 /// Complexity: N (k + 1)-nearest queries, O(N k log N) expected; deterministic whatever `threads`.
 template <PointCloudKernel K>
-Local_spacing local_spacing(const Point_cloud<K>& cloud, unsigned k, bool keep_neighbors = false, unsigned threads = 0)
+Local_spacing local_spacing(const Point_cloud<K>& cloud, unsigned k, bool keep_neighbors = false,
+                            std::optional<unsigned> threads = std::nullopt)
 {
     if (k == 0) throw Invalid_input("local spacing: k must be >= 1");
     const std::size_t n = cloud.size();

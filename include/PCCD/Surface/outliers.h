@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include <PCCD/Error.h>
@@ -37,8 +38,10 @@ struct Outlier_options {
     /// to 0 to disable this test, for scans whose density varies more than 8-fold. Must be finite and
     /// 0 or > 1.
     double global_ratio = 8.0;
-    /// Worker threads; 0 (default) uses all available. Ignored without TBB.
-    unsigned threads = 0;
+    /// Worker threads, >= 1. Unset (default): all available threads; as a stage of
+    /// Point_cloud_object, the object's `threads`. Ignored without TBB. The result does not depend
+    /// on it.
+    std::optional<unsigned> threads = std::nullopt;
 };
 
 namespace internal {

@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 
 #include <Eigen/Core>
 
@@ -34,9 +35,10 @@ struct Surface_domain_options {
     /// False: no domain (f is defined wherever the kernel's support holds a determined fit, the
     /// behaviour of the published method). Default true.
     bool enabled = true;
-    /// Worker threads; 0 (default) uses all available. Ignored without TBB. The result does not
-    /// depend on it.
-    unsigned threads = 0;
+    /// Worker threads, >= 1. Unset (default): all available threads; as a stage of
+    /// Point_cloud_object, the object's `threads`. Ignored without TBB. The result does not depend
+    /// on it.
+    std::optional<unsigned> threads = std::nullopt;
 };
 
 namespace internal {

@@ -204,8 +204,8 @@ Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path,
         if (!domain) domain = surface_domain_radii(cloud);
         return Point_cloud_object(std::make_shared<const Data>(
             make_data(std::move(cloud), std::move(graph), std::move(cpsp), r, weight, std::move(normals),
-                      std::move(*domain), orientation, given, std::move(scan), timings, hierarchy, fit,
-                      std::move(input_index))));
+                      std::move(*domain), orientation, given, std::move(scan), timings,
+                      Point_cloud_object_options{.surface_fit = fit, .hierarchy = hierarchy}, std::move(input_index))));
     } catch (const File_error&) {
         throw;
     } catch (const Invalid_input& e) {

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <optional>
 #include <utility>
 
 #include <PCCD/Error.h>
@@ -25,23 +26,34 @@ namespace PCCD::internal {
 /// asked for hundreds of thousands of threads, so larger requests are rejected with a message.
 inline constexpr unsigned max_worker_threads = 4096;
 
-/// Runs `body()` with at most `threads` worker threads (0: all available).
-/// \throws Invalid_input if threads > max_worker_threads.
-template <class Body>
-void with_threads(unsigned threads, Body&& body)
+/// A thread count of an option: unset (std::nullopt) means all available threads.
+using Thread_count = std::optional<unsigned>;
+
+/// Throws Invalid_input unless `threads` is unset or in [1, max_worker_threads]; `what` names the option.
+inline void check_threads(const Thread_count& threads, const char* what = "threads")
 {
-    if (threads > max_worker_threads)
-        throw Invalid_input(concat("threads = ", threads, " exceeds the supported maximum of ", max_worker_threads,
-                                   " worker threads (0 uses all available)"));
+    if (!threads) return;
+    if (*threads == 0)
+        throw Invalid_input(concat(what, " = 0: a thread count must be >= 1 (leave it unset for all available threads)"));
+    if (*threads > max_worker_threads)
+        throw Invalid_input(concat(what, " = ", *threads, " exceeds the supported maximum of ", max_worker_threads,
+                                   " worker threads (leave it unset for all available threads)"));
+}
+
+/// Runs `body()` with at most `threads` worker threads (unset: all available).
+/// \throws Invalid_input if threads is 0 or > max_worker_threads.
+template <class Body>
+void with_threads(const Thread_count& threads, Body&& body)
+{
+    check_threads(threads);
 #ifdef PCCD_HAS_TBB
-    if (threads == 0) {
+    if (!threads) {
         body();
     } else {
-        oneapi::tbb::task_arena arena(static_cast<int>(threads));
+        oneapi::tbb::task_arena arena(static_cast<int>(*threads));
         arena.execute([&] { body(); });
     }
 #else
-    static_cast<void>(threads);
     body();
 #endif
 }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -41,7 +42,7 @@ inline constexpr std::size_t cpsp_block_size = 512;
 /// in `order` (source k of the search is vertex order[k]); `hand_written` picks the routine.
 template <class Graph, class LengthMap, class VirtualMap>
 std::vector<Cpsp_block> search_cpsp_blocks(const Graph& g, const LengthMap& length, const VirtualMap& is_virtual,
-                                           bool use_virtual, bool hand_written, double bound, unsigned threads,
+                                           bool use_virtual, bool hand_written, double bound, std::optional<unsigned> threads,
                                            const std::vector<std::uint32_t>& order)
 {
     const std::size_t n = num_vertices(g);
@@ -114,7 +115,7 @@ inline Cpsp_arrays scatter_cpsp_blocks(std::vector<Cpsp_block>& blocks, const st
 /// The CPSP arrays of `g`: every vertex's list of the vertices within `bound`, nearest first.
 template <class Graph, class LengthMap, class VirtualMap>
 Cpsp_arrays build_cpsp_arrays(const Graph& g, const LengthMap& length, const VirtualMap& is_virtual,
-                              bool use_virtual, bool hand_written, double bound, unsigned threads)
+                              bool use_virtual, bool hand_written, double bound, std::optional<unsigned> threads)
 {
     // Sources run in breadth-first order (for cache locality) by blocks; the lists are then
     // scattered into point order.
