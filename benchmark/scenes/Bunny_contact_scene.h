@@ -37,7 +37,7 @@ struct Bunny_contact_options {
     std::size_t points = 5000;
     /// Points sampled on the obstacle sphere; default 2000.
     std::size_t obstacle_points = 2000;
-    /// Animation length in seconds; default 4.
+    /// Animation length in seconds (>= 0; 0 is one frame); default 4.
     double duration = 4.0;
     /// Frames per second; default 30.
     double frame_rate = 30.0;
@@ -186,14 +186,15 @@ inline void bumpy_sphere_mesh(std::size_t rings, std::size_t sectors, std::vecto
 } // namespace internal
 
 /// Builds the scene.
-/// \throws File_error if `off_file` is given but unusable; Invalid_input for a duration, frame rate
-///         or frequency that is not > 0, or fewer than 100 points on either cloud.
+/// \throws File_error if `off_file` is given but unusable; Invalid_input for a negative duration, a
+///         frame rate or frequency that is not > 0, or fewer than 100 points on either cloud.
 inline Bunny_contact_scene make_bunny_contact_scene(const Bunny_contact_options& o = {})
 {
-    if (!std::isgreater(o.duration, 0.0) || !std::isgreater(o.frame_rate, 0.0) || !std::isgreater(o.frequency, 0.0) ||
+    if (!(std::isfinite(o.duration) && o.duration >= 0.0) || !std::isgreater(o.frame_rate, 0.0) ||
+        !std::isgreater(o.frequency, 0.0) ||
         !std::isgreater(o.sway_frequency, 0.0))
-        throw Invalid_input(internal::concat("make_bunny_contact_scene: duration ", o.duration, ", frame_rate ",
-                                             o.frame_rate, " and the frequencies must be > 0"));
+        throw Invalid_input(internal::concat("make_bunny_contact_scene: duration ", o.duration, " must be >= 0, frame_rate ",
+                                             o.frame_rate, " and the frequencies > 0"));
     if (o.points < 100 || o.obstacle_points < 100)
         throw Invalid_input("make_bunny_contact_scene: both clouds need at least 100 points");
     Bunny_contact_scene scene;
