@@ -317,7 +317,7 @@ private:
                         if ((*m_rest_lengths)[e] == 0.0) continue; // virtual or duplicate
                         const Eigen::Index j = Eigen::Index(adjacent[e]);
                         const Eigen::Vector3d u = then.col(j).template cast<double>() - q;
-                        gradient.add(Eigen::Vector2d(t1.dot(u), t2.dot(u)), now.col(j).template cast<double>() - x);
+                        gradient.add(Eigen::Vector3d(t1.dot(u), t2.dot(u), n0.dot(u)), now.col(j).template cast<double>() - x);
                     }
                     const Eigen::Vector3d transported = gradient.transported_normal().value_or(n0);
                     if (!refit) {

@@ -73,28 +73,39 @@ Point_stretch point_stretch(const Proximity_graph& graph, const std::vector<doub
     return s;
 }
 
-/// Sums of the least-squares fit of the local deformation gradient at a point: the 3 x 2 map A
-/// minimizing sum |A u_j - v_j|^2, u_j the rest offset of neighbour j in a tangent basis of the rest
-/// normal, v_j its current offset.
+/// Sums of the least-squares fit of the local deformation gradient at a point: the 3 x 3 map F
+/// minimizing sum |F u_j - v_j|^2, u_j the rest offset of neighbour j in the frame (t1, t2, n) of
+/// the rest normal n, v_j its current offset. Where the rest offsets are (nearly) coplanar the
+/// normal column of F is undetermined and only the tangent columns are fitted (3 x 2 map).
 struct Deformation_sums {
-    Eigen::Matrix2d uu = Eigen::Matrix2d::Zero();
-    Eigen::Matrix<double, 3, 2> vu = Eigen::Matrix<double, 3, 2>::Zero();
+    Eigen::Matrix3d uu = Eigen::Matrix3d::Zero();
+    Eigen::Matrix3d vu = Eigen::Matrix3d::Zero();
 
-    void add(const Eigen::Vector2d& u, const Eigen::Vector3d& v)
+    void add(const Eigen::Vector3d& u, const Eigen::Vector3d& v)
     {
         uu += u * u.transpose();
         vu += v * u.transpose();
     }
 
-    /// The rest normal carried by A: (A t1) x (A t2), unit length; nullopt when the rest offsets do
-    /// not span the tangent plane or A collapses it.
+    /// The rest normal carried by F: (F t1) x (F t2), unit length (for the identity map and for
+    /// rotations, exactly the rest normal moved, to rounding); nullopt when the rest offsets do not
+    /// span the tangent plane or F collapses it.
     std::optional<Eigen::Vector3d> transported_normal() const
     {
-        const double det = uu.determinant();
-        const double scale = uu.trace();
+        const Eigen::Matrix2d tangent = uu.topLeftCorner<2, 2>();
+        const double det = tangent.determinant();
+        const double scale = tangent.trace();
         if (!(det > 1e-12 * scale * scale)) return std::nullopt;
-        const Eigen::Matrix<double, 3, 2> a = vu * uu.inverse();
-        const Eigen::Vector3d n = a.col(0).cross(a.col(1));
+        Eigen::Matrix<double, 3, 2> columns;
+        // The spread of the normal offsets left after the tangent fit (Schur complement).
+        const Eigen::Vector2d cross = uu.block<2, 1>(0, 2);
+        const double normal_spread = uu(2, 2) - cross.dot(tangent.inverse() * cross);
+        if (normal_spread > 1e-8 * scale) {
+            columns = (vu * uu.inverse()).leftCols<2>();
+        } else {
+            columns = vu.leftCols<2>() * tangent.inverse();
+        }
+        const Eigen::Vector3d n = columns.col(0).cross(columns.col(1));
         const double length = n.norm();
         if (!(length > 0.0 && std::isfinite(length))) return std::nullopt;
         return n / length;
