@@ -25,6 +25,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -46,6 +47,7 @@ struct Kinetic_bench_args {
     bool size_given = false;
     unsigned threads = 1;
     std::string normals = "transport";
+    std::string csv;
 };
 
 /// --scene bunny-contact: the deforming contact scene, frame by frame.
@@ -62,6 +64,20 @@ void run_contact(const Kinetic_bench_args& args)
         scene, {.threads = args.threads,
                 .normals = args.normals == "refit" ? PCCD::Normal_update::refit : PCCD::Normal_update::transport});
     using F = PCCD::Contact_frame;
+    if (!args.csv.empty()) {
+        std::ofstream file(args.csv);
+        if (!file) throw PCCD::File_error(args.csv, "kinetic-bench cannot open it for writing");
+        file << "frame,time,kinetic,rebuild,exact,grazing,margin,kinetic_ms,kinetic_cpu_ms,update_ms,rebuild_ms,"
+                "rebuild_cpu_ms,min_stretch,max_stretch\n";
+        file << std::setprecision(9);
+        for (std::size_t k = 0; k < run.frames.size(); ++k) {
+            const F& f = run.frames[k];
+            file << k << ',' << f.time << ',' << f.kinetic << ',' << f.rebuild << ',' << f.truth << ',' << f.grazing
+                 << ',' << f.margin << ',' << f.kinetic_ms << ',' << f.kinetic_cpu_ms << ',' << f.update_ms << ','
+                 << f.rebuild_ms << ',' << f.rebuild_cpu_ms << ',' << f.min_stretch << ',' << f.max_stretch << '\n';
+        }
+        if (!file) throw PCCD::File_error(args.csv, "kinetic-bench could not write it");
+    }
     if (args.json) {
         nlohmann::json out;
         out["scene"] = scene.name;
@@ -191,6 +207,7 @@ void register_kinetic_bench(CLI::App& app)
                      ->capture_default_str();
     cmd->add_option("--threads", args->threads, "bunny-contact: threads of the update and of the rebuild (0: all)")
         ->capture_default_str();
+    cmd->add_option("--csv", args->csv, "bunny-contact: also write every frame to this CSV file");
     cmd->add_option("--normals", args->normals, "bunny-contact: how the deforming object updates normals")
         ->check(CLI::IsMember({"transport", "refit"}))
         ->capture_default_str();
@@ -223,8 +240,8 @@ void register_kinetic_bench(CLI::App& app)
             run_contact(*args);
             return;
         }
-        if (args->normals != "transport" || args->threads != 1)
-            throw PCCD::Invalid_input("kinetic-bench: --normals and --threads apply to --scene bunny-contact only");
+        if (args->normals != "transport" || args->threads != 1 || !args->csv.empty())
+            throw PCCD::Invalid_input("kinetic-bench: --normals, --threads and --csv apply to --scene bunny-contact only");
         const bool custom_length = args->frames > 0;
         const double duration = custom_length ? args->warm_up + double(args->frames) / args->query_hz : 0.0;
         if (args->scene == "cloth") {
