@@ -124,6 +124,7 @@ public:
         bool first = true;
         for (std::uint32_t i = 0; i < std::uint32_t(stretch.size()); ++i) {
             const auto& s = stretch[i];
+            if (s.measured == 0) continue; // only virtual edges, or none of positive rest length
             report.min_stretch = first ? s.min : std::min(report.min_stretch, s.min);
             report.max_stretch = first ? s.max : std::max(report.max_stretch, s.max);
             first = false;

@@ -41,6 +41,7 @@ struct Point_stretch {
     double max = 1.0;
     double mean = 1.0;
     std::uint32_t worst = 0; ///< the other end of the edge farthest from length-preserving
+    std::size_t measured = 0; ///< edges measured
 };
 
 template <class Points>
@@ -70,6 +71,7 @@ Point_stretch point_stretch(const Proximity_graph& graph, const std::vector<doub
         ++count;
     }
     if (count > 0) s.mean = sum / double(count);
+    s.measured = count;
     return s;
 }
 
