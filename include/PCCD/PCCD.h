@@ -86,6 +86,8 @@
 
 // Kinetic AABB trees
 #include <PCCD/Kinetic/Cubic.h>
+#include <PCCD/Kinetic/Deformation.h>
+#include <PCCD/Kinetic/Deforming_point_cloud_object.h>
 #include <PCCD/Kinetic/Event_queue.h>
 #include <PCCD/Kinetic/Kinetic_AABB_tree.h>
 #include <PCCD/Kinetic/Kinetic_primitives.h>

@@ -70,3 +70,62 @@ TEST_CASE("A hierarchy rejects bad reaches", "[hierarchy]")
     reach(4) = std::numeric_limits<double>::quiet_NaN();
     CHECK_THROWS_WITH(PCCD::Point_cloud_hierarchy(p, reach), Contains("reach of point 4"));
 }
+
+TEST_CASE("A refitted hierarchy keeps the tree and has tight boxes and reaches over the new positions", "[hierarchy]")
+{
+    for (const std::size_t n : {1u, 9u, 1000u}) {
+        const Eigen::Matrix3Xd p = pccd_test::hierarchy_points(n, n + 3, 0.3);
+        const Eigen::VectorXd reach = pccd_test::hierarchy_reaches(n, 5 * n, 0.0, 0.2);
+        const PCCD::Point_cloud_hierarchy h(p, reach, {.leaf_size = 8});
+        // New positions: a shear and a shuffle of the points' offsets (far from the old order).
+        Eigen::Matrix3Xd q = p;
+        for (Eigen::Index i = 0; i < q.cols(); ++i) q.col(i) += Eigen::Vector3d(0.7 * p(2, i), 0.0, p(0, i) * p(1, i));
+        q += pccd_test::hierarchy_points(n, 3 * n + 11, 0.3);
+        const Eigen::VectorXd new_reach = pccd_test::hierarchy_reaches(n, 9 * n, 0.1, 0.4);
+        const PCCD::Point_cloud_hierarchy r(h, q, new_reach);
+        REQUIRE(r.nodes().size() == h.nodes().size());
+        REQUIRE(r.order() == h.order());
+        CHECK(r.has_reach());
+        CHECK(r.leaf_size() == h.leaf_size());
+        for (Index i = 0; i < r.nodes().size(); ++i) {
+            const auto& node = r.node(i);
+            CHECK(node.first == h.node(i).first);
+            CHECK(node.count == h.node(i).count);
+            CHECK(node.right == h.node(i).right);
+            // Brute force: the tight box and the largest reach of the node's points.
+            Eigen::AlignedBox3d box;
+            double largest = 0.0;
+            for (const Index k : r.points_of(i)) {
+                box.extend(q.col(k));
+                largest = std::max(largest, new_reach(k));
+            }
+            CHECK(node.box.min() == box.min());
+            CHECK(node.box.max() == box.max());
+            CHECK(node.reach == largest);
+        }
+        for (std::size_t k = 0; k < n; ++k) {
+            CHECK(r.ordered_points().col(Eigen::Index(k)).head<3>() == q.col(r.order()[k]));
+            CHECK(r.ordered_points()(3, Eigen::Index(k)) == new_reach(r.order()[k]));
+        }
+        // Without reaches.
+        const PCCD::Point_cloud_hierarchy bare(h, q, Eigen::VectorXd());
+        CHECK_FALSE(bare.has_reach());
+        CHECK(bare.root().reach == 0.0);
+    }
+}
+
+TEST_CASE("A refit with the wrong number of points, a non-finite point or a bad reach throws", "[hierarchy]")
+{
+    const Eigen::Matrix3Xd p = pccd_test::hierarchy_points(50, 3, 0.3);
+    const PCCD::Point_cloud_hierarchy h(p);
+    CHECK_THROWS_WITH(PCCD::Point_cloud_hierarchy(h, Eigen::Matrix3Xd(p.leftCols(49)), Eigen::VectorXd()),
+                      Contains("refit with 49 points"));
+    Eigen::Matrix3Xd bad = p;
+    bad(1, 17) = std::numeric_limits<double>::quiet_NaN();
+    CHECK_THROWS_WITH(PCCD::Point_cloud_hierarchy(h, bad, Eigen::VectorXd()), Contains("point 17 is not finite"));
+    Eigen::VectorXd reach = Eigen::VectorXd::Constant(50, 0.1);
+    reach(3) = -1.0;
+    CHECK_THROWS_WITH(PCCD::Point_cloud_hierarchy(h, p, reach), Contains("reach of point 3"));
+    CHECK_THROWS_AS(PCCD::Point_cloud_hierarchy(h, p, Eigen::VectorXd::Constant(7, 0.1)), PCCD::Invalid_input);
+    CHECK_THROWS_AS(PCCD::Point_cloud_hierarchy(PCCD::Point_cloud_hierarchy(), p, Eigen::VectorXd()), PCCD::Invalid_input);
+}

@@ -75,7 +75,7 @@ public:
 
     /// Builds the hierarchy of the 3 x N `points` with a reach per point (`reach(i)` for point i,
     /// finite and >= 0; empty: every reach is 0). Node::reach is the largest reach of a node's points.
-    /// 	hrows Invalid_input as above, or if `reach` is neither empty nor of size N, or holds a value
+    /// \throws Invalid_input as above, or if `reach` is neither empty nor of size N, or holds a value
     ///         that is not finite or < 0.
     template <class Derived>
     Point_cloud_hierarchy(const Eigen::MatrixBase<Derived>& points, const Eigen::VectorXd& reach,
@@ -115,6 +115,60 @@ public:
             Node& node = m_nodes[i];
             node.reach = node.is_leaf() ? m_ordered.row(3).segment(node.first, node.count).maxCoeff()
                                         : std::max(m_nodes[left(Index(i))].reach, m_nodes[node.right].reach);
+        }
+    }
+
+    /// The tree of `topology` (same nodes, same point order, same leaf size) over new positions of
+    /// the same points: every box is recomputed tight over its node's points at `points` (3 x N,
+    /// point i in column i) and every reach from `reach` (empty: the hierarchy has no reaches). This
+    /// is the bottom-up refit a deforming cloud uses instead of a rebuild
+    /// (doc/manual/kinetic.md, "Deforming point clouds"): the boxes stay exact, only their
+    /// tightness depends on how far the points moved relative to each other since `topology` was
+    /// built.
+    /// \throws Invalid_input if `topology` is empty, the number of points differs from its size, a
+    ///         coordinate is not finite, or `reach` is neither empty nor of size N or holds a value
+    ///         that is not finite or < 0.
+    /// Complexity: O(N) time and space.
+    template <class Derived>
+    Point_cloud_hierarchy(const Point_cloud_hierarchy& topology, const Eigen::MatrixBase<Derived>& points,
+                          const Eigen::VectorXd& reach)
+        : m_nodes(topology.m_nodes), m_order(topology.m_order), m_leaf_size(topology.m_leaf_size),
+          m_has_reach(reach.size() != 0)
+    {
+        if (topology.empty()) throw Invalid_input("point cloud hierarchy: refit of an empty hierarchy");
+        if (points.rows() != 3 || std::size_t(points.cols()) != m_order.size())
+            throw Invalid_input(internal::concat("point cloud hierarchy: refit with ", points.cols(),
+                                                 " points of a hierarchy over ", m_order.size()));
+        if (reach.size() != 0 && std::size_t(reach.size()) != m_order.size())
+            throw Invalid_input(internal::concat("point cloud hierarchy: ", reach.size(), " reaches for ",
+                                                 m_order.size(), " points"));
+        const std::size_t n = m_order.size();
+        m_ordered.resize(4, Eigen::Index(n));
+        for (std::size_t k = 0; k < n; ++k) {
+            const Index i = m_order[k];
+            m_ordered.col(Eigen::Index(k)).head<3>() = points.col(Eigen::Index(i)).template cast<double>();
+            if (!internal::all_finite(m_ordered.col(Eigen::Index(k)).head<3>()))
+                throw Invalid_input(internal::concat("point cloud hierarchy: point ", i, " is not finite"));
+            const double r = reach.size() == 0 ? 0.0 : reach(Eigen::Index(i));
+            if (!(std::isfinite(r) && r >= 0.0))
+                throw Invalid_input(internal::concat("point cloud hierarchy: the reach of point ", i, " (", r,
+                                                     ") must be finite and >= 0"));
+            m_ordered(3, Eigen::Index(k)) = r;
+        }
+        // Children follow their parents in depth-first order: a backward sweep sees children first.
+        for (std::size_t i = m_nodes.size(); i-- > 0;) {
+            Node& node = m_nodes[i];
+            if (node.is_leaf()) {
+                const auto block = m_ordered.middleCols(node.first, node.count);
+                node.box = Eigen::AlignedBox3d(block.topRows<3>().rowwise().minCoeff(),
+                                               block.topRows<3>().rowwise().maxCoeff());
+                node.reach = block.row(3).maxCoeff();
+            } else {
+                const Node& a = m_nodes[left(Index(i))];
+                const Node& b = m_nodes[node.right];
+                node.box = a.box.merged(b.box);
+                node.reach = std::max(a.reach, b.reach);
+            }
         }
     }
 

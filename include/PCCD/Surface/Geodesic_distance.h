@@ -56,6 +56,8 @@ public:
     double max_radius() const { return m_map->bound(); }
     const Point_cloud<K>& cloud() const { return m_cloud; }
     const Map& map() const { return *m_map; }
+    /// The shared map itself (a deforming cloud keeps its rest map over moved points).
+    const std::shared_ptr<const Map>& shared_map() const { return m_map; }
 
     /// Visits the entries of i's CPSP list with g(p_i, p_j) <= radius, nearest first. O(k), no
     /// kd-tree query.

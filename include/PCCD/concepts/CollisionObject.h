@@ -45,8 +45,8 @@ namespace PCCD {
 /// All of these must be const and safe to call concurrently; the references must stay valid while
 /// the object lives.
 ///
-/// Model: PCCD::Point_cloud_object<K> for every kernel K. Archetype and near-misses:
-/// test/concepts/archetypes_test.cpp.
+/// Models: PCCD::Point_cloud_object<K> and PCCD::Deforming_point_cloud_object<K> (its current
+/// frame) for every kernel K. Archetype and near-misses: test/concepts/archetypes_test.cpp.
 namespace internal {
 
 /// A 3 x N Eigen matrix of float or double held by the object (an lvalue, not a temporary).
