@@ -63,7 +63,8 @@ namespace PCCD {
 ///
 /// \tparam K a model of PointCloudKernel.
 ///
-/// The points keep their indices: outlier removal of the rest pose's options is turned off.
+/// The points keep their indices: outlier removal and the spatial order of the rest pose's options
+/// are turned off.
 /// Copies share the rest data and the current frame (a frame replaces it; copies keep theirs).
 /// Thread safety: const members may run concurrently (queries included); set_positions and
 /// advance_to need exclusive access.
@@ -80,11 +81,11 @@ public:
     /// @{
 
     /// The rest pose: the 3 x N `points` (point i in column i, the index every frame refers to),
-    /// preprocessed with `options` (outlier removal off).
+    /// preprocessed with `options` (outlier removal and spatial order off).
     /// \throws Invalid_input as Point_cloud_object, or for a stretch bound that is not finite and > 0.
     explicit Deforming_point_cloud_object(const Eigen::Matrix3Xd& points, Point_cloud_object_options options = {},
                                           const Deformation_options& deformation = {})
-        : m_options(without_outlier_removal(options)), m_deformation(checked(deformation))
+        : m_options(in_given_order(options)), m_deformation(checked(deformation))
     {
         reset_rest(points);
     }
@@ -239,9 +240,10 @@ private:
         return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     }
 
-    static Point_cloud_object_options without_outlier_removal(Point_cloud_object_options options)
+    static Point_cloud_object_options in_given_order(Point_cloud_object_options options)
     {
         options.outliers.remove = false;
+        options.spatial_order = false;
         return options;
     }
 
