@@ -67,7 +67,14 @@ set(shift_3 1 0 0 3 0 1 0 0 0 0 1 0)
 set(json_counters "\"f_evaluations\": [0-9]+" "\"brackets_tried\": " "\"search_steps\": " "\"samples\": "
                   "\"candidate_points\": " "\"query_us\": [0-9.e+-]+" "\"preprocess_ms\": [0-9.e+-]+")
 
-if(CASE STREQUAL "collide_json")
+if(CASE STREQUAL "kinetic_bench_bunny_contact_json")
+  # The summary fields of the deforming contact scene (one regex per line: no backtracking over the
+  # per-frame records).
+  pccd_run(OK ARGS kinetic-bench --scene bunny-contact --size 800 --frames 4 --json
+           STDOUT_MATCH "\n  \"agreement\": [01][.0-9e-]*,\n" "\n  \"frames\": 4,\n"
+                        "\n  \"ms_per_frame\": {\n    \"kinetic\": [0-9.e-]+,\n    \"rebuild\": [0-9.e-]+\n"
+                        "\n  \"points\": 800,\n" "\"per_frame\": \\[")
+elseif(CASE STREQUAL "collide_json")
   pccd_run(OK ARGS collide sphere.xyz sphere.xyz --transform-b ${shift_1} --json
            MATCH "\"intersects\": true" "\"status\": \"intersecting\"" "\"method\": \"isearch\"" "\"mode\": \"first\""
                  "\"points\": 1," "\"same_object\": true" ${json_counters})

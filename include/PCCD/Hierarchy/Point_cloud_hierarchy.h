@@ -4,7 +4,9 @@
 // reach (how far from it its surface can be defined, doc/manual/hierarchy.md) and each node the
 // largest reach of its points; the points and reaches are also stored in hierarchy order, so that
 // a leaf's data is contiguous. The intersection queries use it to restrict their work to the parts
-// of two objects that can touch (overlapping_leaves.h, reach_traversal.h).
+// of two objects that can touch (overlapping_leaves.h, reach_traversal.h). A built tree can be
+// refitted over new positions of the same points (the hierarchy of a deforming cloud,
+// doc/manual/kinetic.md "Deforming point clouds").
 #pragma once
 
 #include <algorithm>
