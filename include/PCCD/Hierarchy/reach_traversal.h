@@ -111,6 +111,8 @@ inline bool within_reach(const Point_cloud_hierarchy& t, const Eigen::Vector3d& 
 /// The point of t nearest to q (t's local frame): its position in hierarchy order (a column of
 /// t.ordered_points()) and its squared distance; {t.size(), +inf} for an empty hierarchy. Exact
 /// (branch and bound over the boxes, nearer child first). O(height) nodes for a point near t.
+/// (Its fixed-stack loop is written out like within_reach()'s: a shared helper taking the node
+/// visit as a lambda measured 3 % slower interpolation-search queries, whose probes call this.)
 inline std::pair<std::size_t, double> nearest_point(const Point_cloud_hierarchy& t, const Eigen::Vector3d& q)
 {
     std::pair<std::size_t, double> best{t.size(), std::numeric_limits<double>::infinity()};
