@@ -9,13 +9,15 @@
 // SurfaceDistance and SurfaceWeight (WLS_surface, estimate_normals), PointCloudKernel (Point_cloud,
 // both distances, the graphs, the sampling radius, outliers, the domain, Point_cloud_object) and
 // ReadablePointMap (Point_cloud_object, then the queries),
-// PointGraph, ProximityGraph and EdgeFlagMap (orient_normals, Paths_on_the_fly, the CPSP map with
-// both bounded Dijkstras). The kinetic concepts have their own file, concepts/kinetic_archetypes_test.cpp.
+// PointGraph, ProximityGraph, EdgeFlagMap and WritableEdgeFlagMap (orient_normals, Paths_on_the_fly,
+// graph_components, mark_long_edges, the CPSP map with both bounded Dijkstras). The kinetic concepts have their own file, concepts/kinetic_archetypes_test.cpp.
 #include "surface_test_helpers.h"
 
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Intersection/do_intersect_many.h>
+#include <PCCD/Proximity_graph/graph_components.h>
 #include <PCCD/Proximity_graph/knn_graph.h>
+#include <PCCD/Proximity_graph/prune_long_edges.h>
 #include <PCCD/Proximity_graph/sphere_of_influence_graph.h>
 #include <PCCD/Surface/Geodesic_distance.h>
 #include <PCCD/Surface/outliers.h>
@@ -92,6 +94,13 @@ struct Length_map {
 struct Flag_map {
     const Graph* graph;
     friend bool get(const Flag_map& m, const Edge& e) { return m.graph->flags[e.index]; }
+};
+
+/// Exactly what WritableEdgeFlagMap requires: get() and put() of an edge's flag.
+struct Writable_flag_map {
+    Graph* graph;
+    friend bool get(const Writable_flag_map& m, const Edge& e) { return m.graph->flags[e.index]; }
+    friend void put(const Writable_flag_map& m, const Edge& e, bool b) { m.graph->flags[e.index] = b; }
 };
 
 /// Near-miss of EdgeFlagMap: get() gives a name, not a flag.
@@ -180,6 +189,9 @@ static_assert(!PCCD::PointGraph<archetype::Partial_graph<archetype::no_target>>)
 static_assert(PCCD::EdgeFlagMap<archetype::Flag_map, archetype::Graph>);
 static_assert(PCCD::EdgeFlagMap<PCCD::No_virtual_edges, archetype::Graph>);
 static_assert(!PCCD::EdgeFlagMap<archetype::Name_map, archetype::Graph>);
+static_assert(PCCD::WritableEdgeFlagMap<archetype::Writable_flag_map, archetype::Graph>);
+static_assert(PCCD::WritableEdgeFlagMap<PCCD::Proximity_graph::Virtual_map, PCCD::Proximity_graph::Graph>);
+static_assert(!PCCD::WritableEdgeFlagMap<archetype::Flag_map, archetype::Graph>, "read-only");
 
 using namespace pccd_test;
 
@@ -748,6 +760,15 @@ TEST_CASE("the CPSP map builds over a graph archetype as over the model", "[conc
         graph.offsets.push_back(graph.targets.size());
     }
     INFO(virtual_edges << " virtual edges");
+    // Components and the long-edge marking on the archetype: as on the model.
+    const PCCD::Graph_components components = PCCD::graph_components(graph, archetype::Flag_map{&graph});
+    CHECK(components.count == PCCD::graph_components(model).count);
+    CHECK(components.label == PCCD::graph_components(model).label);
+    const std::vector<bool> marked_by_model = graph.flags;
+    graph.flags.assign(graph.flags.size(), false);
+    CHECK(PCCD::mark_long_edges(graph, archetype::Length_map{&graph}, archetype::Writable_flag_map{&graph}) ==
+          virtual_edges / 2);
+    CHECK(graph.flags == marked_by_model);
     const double r = object.sampling_radius();
     for (const auto algorithm : {PCCD::Bounded_dijkstra::hand_written, PCCD::Bounded_dijkstra::boost})
         for (const bool use_virtual : {false, true}) {

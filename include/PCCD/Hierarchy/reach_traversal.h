@@ -79,56 +79,38 @@ inline bool grown_boxes_may_overlap(const Eigen::AlignedBox3d& a, const Rigid_tr
     return internal::grown_boxes_may_overlap(a, r, abs_r, a_to_b.transform_point(a.center()), margin_a, b, margin_b);
 }
 
-namespace internal {
-
-/// Depth-first over the nodes of `t` from the root: `visit(i, push)` handles node i and calls
-/// `push(child)` for each child to descend into (the last pushed is visited first); it returns false
-/// to end the walk. \pre t is not empty.
-template <class Visit>
-void depth_first(const Point_cloud_hierarchy& t, Visit&& visit)
-{
-    using Index = Point_cloud_hierarchy::Index;
-    // A fixed stack: a depth-first walk holds at most one sibling per level, and a median-split tree
-    // of < 2^32 points has fewer than 64 levels.
-    Index stack[64];
-    int top = 0;
-    stack[top++] = 0;
-    const auto push = [&](Index child) { stack[top++] = child; };
-    while (top > 0)
-        if (!visit(stack[--top], push)) return;
-}
-
-} // namespace internal
-
 /// Whether the point q (t's local frame) lies within the reach of some point of t: |q - p_k| <=
 /// rule(reach_k) for some k. Exact (compares points at the leaves). O(height) nodes for a point
 /// near one leaf; more where grown boxes overlap.
+/// (A query-path loop, written out like nearest_point()'s: one depth-first helper for both, taking
+/// the node visit as a lambda, measured 3 % slower interpolation-search queries.)
 inline bool within_reach(const Point_cloud_hierarchy& t, const Eigen::Vector3d& q, const Reach_rule& rule)
 {
     if (t.empty()) return false;
     using Index = Point_cloud_hierarchy::Index;
     const Eigen::Matrix4Xd& points = t.ordered_points();
-    bool found = false;
-    internal::depth_first(t, [&](Index i, const auto& push) {
+    // A fixed stack: a depth-first walk holds at most one sibling per level, and a median-split tree
+    // of < 2^32 points has fewer than 64 levels.
+    Index stack[64];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const Index i = stack[--top];
         const auto& node = t.node(i);
         const double margin = rule(node.reach);
         if ((q.array() < node.box.min().array() - margin).any() || (q.array() > node.box.max().array() + margin).any())
-            return true;
+            continue;
         if (node.is_leaf()) {
             for (Index k = node.first; k < node.first + node.count; ++k) {
                 const double reach = rule(points(3, k));
-                if ((points.col(k).head<3>() - q).squaredNorm() <= reach * reach) {
-                    found = true;
-                    return false; // the walk ends
-                }
+                if ((points.col(k).head<3>() - q).squaredNorm() <= reach * reach) return true;
             }
-            return true;
+            continue;
         }
-        push(t.right(i));
-        push(t.left(i));
-        return true;
-    });
-    return found;
+        stack[top++] = t.right(i);
+        stack[top++] = t.left(i);
+    }
+    return false;
 }
 
 /// The point of t nearest to q (t's local frame): its position in hierarchy order (a column of
@@ -140,22 +122,25 @@ inline std::pair<std::size_t, double> nearest_point(const Point_cloud_hierarchy&
     if (t.empty()) return best;
     using Index = Point_cloud_hierarchy::Index;
     const Eigen::Matrix4Xd& points = t.ordered_points();
-    internal::depth_first(t, [&](Index i, const auto& push) {
+    Index stack[64];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const Index i = stack[--top];
         const auto& node = t.node(i);
-        if (node.box.squaredExteriorDistance(q) >= best.second) return true;
+        if (node.box.squaredExteriorDistance(q) >= best.second) continue;
         if (node.is_leaf()) {
             for (Index k = node.first; k < node.first + node.count; ++k) {
                 const double d = (points.col(k).head<3>() - q).squaredNorm();
                 if (d < best.second) best = {k, d};
             }
-            return true;
+            continue;
         }
         Index near = t.left(i), far = t.right(i);
         if (t.node(far).box.squaredExteriorDistance(q) < t.node(near).box.squaredExteriorDistance(q)) std::swap(near, far);
-        push(far);
-        push(near);
-        return true;
-    });
+        stack[top++] = far;
+        stack[top++] = near;
+    }
     return best;
 }
 

@@ -65,14 +65,14 @@ inline double median_of_positive(std::vector<double>& values)
 /// \tparam Graph a model of ProximityGraph with `LengthMap`; undirected, or directed with both
 ///         directions of every edge stored (as Proximity_graph::Graph).
 /// \tparam LengthMap readable edge -> length map.
-/// \tparam VirtualMap writable edge -> bool map (e.g. `get(&Proximity_edge::is_virtual, g)`).
+/// \tparam VirtualMap a model of WritableEdgeFlagMap (e.g. `get(&Proximity_edge::is_virtual, g)`).
 /// \returns the number of undirected edges marked virtual (edges counted from their smaller end;
 ///          self-loops never count).
 /// \throws Invalid_input if the factor is not > 0.
 /// Complexity: O(E) expected (two passes of nth_element over the adjacency lists). Thread safety:
 /// reads `g`; writes `is_virtual`, so no other thread may use that map meanwhile.
 template <class Graph, class LengthMap, class VirtualMap>
-    requires ProximityGraph<Graph, LengthMap>
+    requires ProximityGraph<Graph, LengthMap> && WritableEdgeFlagMap<VirtualMap, Graph>
 std::size_t mark_long_edges(const Graph& g, const LengthMap& length, VirtualMap is_virtual,
                             const Long_edge_options& options = {})
 {

@@ -71,4 +71,18 @@ concept EdgeFlagMap = requires(const M& m, typename boost::graph_traits<G>::edge
     { get(m, e) } -> std::convertible_to<bool>;
 };
 
+/// \concept WritableEdgeFlagMap
+/// An EdgeFlagMap that can also be written: where mark_long_edges() records which edges are long.
+///
+/// Requirements: `M` models EdgeFlagMap for `G`, and for `M& m`, an edge `e` of `G` and a bool
+/// `b`, `put(m, e, b)` sets the flag of `e` (a writable property map; copies of `m` write to the
+/// same storage, since the map is taken by value).
+///
+/// Models: the bundled-member map `get(&Proximity_edge::is_virtual, g)` of PCCD's default graph,
+/// and any Boost read-write property map over edges with a bool value.
+template <class M, class G>
+concept WritableEdgeFlagMap = EdgeFlagMap<M, G> && requires(M& m, typename boost::graph_traits<G>::edge_descriptor e, bool b) {
+    put(m, e, b);
+};
+
 } // namespace PCCD
