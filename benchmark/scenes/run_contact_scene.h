@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cstddef>
 #include <ctime>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -94,8 +95,10 @@ struct Matrix_column_map {
 /// \throws what the objects and queries throw (Deformation_error if the scene breaks the stretch rule).
 inline Contact_run run_contact_scene(const Bunny_contact_scene& scene, const Contact_run_options& options = {})
 {
+    // 0 asks for all available threads: the options' unset count.
+    const std::optional<unsigned> threads = options.threads == 0 ? std::nullopt : std::optional<unsigned>(options.threads);
     Point_cloud_object_options object_options;
-    object_options.threads = options.threads;
+    object_options.threads = threads;
     object_options.outliers.remove = false; // both objects keep every point
     std::vector<std::size_t> obstacle_items(std::size_t(scene.obstacle_points.cols()));
     for (std::size_t i = 0; i < obstacle_items.size(); ++i) obstacle_items[i] = i;
@@ -105,7 +108,7 @@ inline Contact_run run_contact_scene(const Bunny_contact_scene& scene, const Con
     const auto rest_start = std::chrono::steady_clock::now();
     Deforming_point_cloud_object<> deforming(
         scene.rest_points, object_options,
-        Deformation_options{.stretch_bound = options.stretch_bound, .normals = options.normals, .threads = options.threads});
+        Deformation_options{.stretch_bound = options.stretch_bound, .normals = options.normals, .threads = threads});
     run.rest_build_ms = internal::wall_ms_since(rest_start);
     std::vector<std::size_t> items(std::size_t(scene.rest_points.cols()));
     for (std::size_t i = 0; i < items.size(); ++i) items[i] = i;

@@ -43,10 +43,12 @@ PCCD::Bunny_contact_scene small_scene(std::size_t points = 2000)
     return PCCD::make_bunny_contact_scene({.points = points, .obstacle_points = 1000});
 }
 
+/// Every point kept, in the order given: point i of a rebuilt object is point i of the deforming one.
 PCCD::Point_cloud_object_options no_outliers()
 {
     PCCD::Point_cloud_object_options o;
     o.outliers.remove = false;
+    o.spatial_order = false;
     return o;
 }
 

@@ -569,8 +569,9 @@ TEST_CASE("a point cloud object leaves out exactly the injected outliers", "[sur
     CHECK(object.scan().input_points == 2020);
     CHECK(object.scan().outliers == c.outliers);
     REQUIRE(object.size() == 2000);
-    // The kept points are the other input points in their order.
-    CHECK(coordinates(object.cloud()) == c.inliers);
+    // The kept points are the other input points (in spatial order: input_index() names each).
+    for (std::size_t i = 0; i < object.size(); ++i)
+        CHECK(object.cloud().position(std::uint32_t(i)) == c.points.col(Eigen::Index(object.input_index(i))));
     CHECK(object.normals().cols() == 2000);
     CHECK(object.domain_radii().size() == 2000);
     // Kept: no removal.
@@ -811,6 +812,11 @@ TEST_CASE("an object with outliers and noise saves and loads back identical", "[
     REQUIRE(std::uint8_t(bytes[fit_at]) == std::uint8_t(PCCD::Surface_fit::sphere));
     CHECK(loaded.surface().fit() == PCCD::Surface_fit::sphere);
     CHECK(loaded.euclidean_surface().fit() == PCCD::Surface_fit::sphere);
+    // Version 4: the input indices follow the fit (a count, then one u32 per point).
+    std::uint64_t stored_indices = 0;
+    std::memcpy(&stored_indices, bytes.data() + fit_at + 1, 8);
+    REQUIRE(stored_indices == n);
+    const std::size_t indices_end = fit_at + 1 + 8 + 4 * n;
     // The bytes without [begin, end), as a file of `version` with a fresh checksum.
     const auto older = [&](std::size_t begin, std::size_t end, std::uint32_t version, const char* name) {
         std::string b = bytes.substr(0, begin) + bytes.substr(end, bytes.size() - 8 - end);
@@ -823,12 +829,17 @@ TEST_CASE("an object with outliers and noise saves and loads back identical", "[
         std::ofstream(older_path, std::ios::binary).write(b.data(), std::streamsize(b.size()));
         return PCCD::Point_cloud_object<>::load(older_path);
     };
-    const auto v2 = older(fit_at, fit_at + 1, 2, "scan_surface_v2.pccdobj");
+    // Version 3 (points in the order given): identity input indices.
+    const auto v3 = older(fit_at + 1, indices_end, 3, "scan_surface_v3.pccdobj");
+    CHECK(v3.surface().fit() == PCCD::Surface_fit::sphere);
+    CHECK(v3.normals() == object.normals());
+    for (std::size_t i = 0; i < n; ++i) CHECK(v3.input_index(i) == i);
+    const auto v2 = older(fit_at, indices_end, 2, "scan_surface_v2.pccdobj");
     CHECK(v2.surface().fit() == PCCD::Surface_fit::plane);
     CHECK(v2.euclidean_surface().fit() == PCCD::Surface_fit::plane);
     CHECK(v2.noise_estimate() == object.noise_estimate());
     CHECK(v2.normals() == object.normals());
-    const auto old = older(scan_begin, fit_at + 1, 1, "scan_surface_v1.pccdobj");
+    const auto old = older(scan_begin, indices_end, 1, "scan_surface_v1.pccdobj");
     CHECK(old.surface().fit() == PCCD::Surface_fit::plane);
     CHECK(old.size() == n);
     CHECK(old.scan().input_points == n);

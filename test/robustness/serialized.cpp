@@ -81,22 +81,25 @@ const std::string& object_bytes()
 /// Field offsets of an object file (format version 1, see Point_cloud_object.h), found from its end
 /// so that they do not depend on the number of timing fields.
 struct Object_layout {
-    std::size_t n, sampling_radius = 24, bandwidth = 32, theta_eps = 40, points, normals, fit, geodesic_size, geodesic;
+    std::size_t n, sampling_radius = 24, bandwidth = 32, theta_eps = 40, points, normals, fit, input_indices,
+        geodesic_size, geodesic;
 };
 
 Object_layout object_layout(const std::string& bytes, std::size_t n)
 {
-    // Version 3 (Point_cloud_object.h): a 113-byte header, points 24N, normals 24N, then the scan
+    // Version 4 (Point_cloud_object.h): a 113-byte header, points 24N, normals 24N, then the scan
     // section (f64 noise, u64 input points, u64 M, u32 outliers[M], u64 D, f64 radii[D]), u8 fit,
-    // u64 G, G bytes, u64 checksum.
+    // u64 I (= N), u32 input indices[I], u64 G, G bytes, u64 checksum.
     REQUIRE(get<std::uint64_t>(bytes, 16) == n);
     const std::size_t points = 113, normals = points + 24 * n, scan = normals + 24 * n;
     const auto m = get<std::uint64_t>(bytes, scan + 16);
     const std::size_t radii_count = scan + 24 + 4 * std::size_t(m);
     const auto d = get<std::uint64_t>(bytes, radii_count);
-    const std::size_t geodesic_size = radii_count + 8 + 8 * std::size_t(d) + 1;
+    const std::size_t fit = radii_count + 8 + 8 * std::size_t(d);
+    REQUIRE(get<std::uint64_t>(bytes, fit + 1) == n);
+    const std::size_t geodesic_size = fit + 1 + 8 + 4 * n;
     REQUIRE(geodesic_size + 8 + get<std::uint64_t>(bytes, geodesic_size) + 8 == bytes.size());
-    return {n, 24, 32, 40, points, normals, geodesic_size - 1, geodesic_size, geodesic_size + 8};
+    return {n, 24, 32, 40, points, normals, fit, fit + 1, geodesic_size, geodesic_size + 8};
 }
 
 void require_load_error(const std::string& name, const std::string& bytes, const std::vector<std::string>& keywords)
@@ -129,11 +132,11 @@ TEST_CASE("serialized objects: empty, foreign, other version and byte order", "[
     PCCD::write_geodesic_data(geodesic_path, small_object().graph(), small_object().cpsp());
     require_load_error("geodesic_as_object.pccdobj", read_bytes(geodesic_path), {"not a PCCD object file"});
     require_geodesic_error("object_as_geodesic.pccdgeo", good, {"not a PCCD geodesic file"});
-    for (const std::uint32_t version : {0u, 4u, 0xffffffffu}) {
+    for (const std::uint32_t version : {0u, 5u, 0xffffffffu}) {
         std::string other = good;
         put(other, 8, version);
         require_load_error("version.pccdobj", other,
-                           {"object file format version " + std::to_string(version), "reads versions 1 to 3"});
+                           {"object file format version " + std::to_string(version), "reads versions 1 to 4"});
         reseal(other);
         require_load_error("version.pccdobj", other, {"object file format version " + std::to_string(version)});
     }
@@ -203,6 +206,13 @@ TEST_CASE("serialized objects: inconsistent content behind a valid checksum", "[
     for (const std::uint64_t count : {n - 1, n + 1})
         crafted("count_off_by_one", [&](std::string& b) { put(b, 16, count); }, {"inconsistent"});
     crafted("fit", [&](std::string& b) { b[at.fit] = char(7); }, {"unknown surface fit 7"});
+    // Input indices: one repeated, one beyond the points given, a count that is not N.
+    crafted("repeated input index", [&](std::string& b) { put(b, at.input_indices + 8 + 4, get<std::uint32_t>(b, at.input_indices + 8)); },
+            {"repeated or beyond"});
+    crafted("input index beyond", [&](std::string& b) { put(b, at.input_indices + 8, std::uint32_t(1u << 30)); },
+            {"repeated or beyond"});
+    crafted("input index count", [&](std::string& b) { put(b, at.input_indices, std::uint64_t(at.n - 1)); },
+            {"input indices are not one per point"});
     for (const double r : {0.0, -1.0, nan, inf})
         crafted("radius", [&](std::string& b) { put(b, at.sampling_radius, r); }, {"invalid sampling radius"});
     for (const double h : {0.0, -1.0, nan, inf, 1e300})

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include <PCCD/Error.h>
@@ -44,9 +45,9 @@ struct Deformation_options {
     /// How the normals follow the motion; default Normal_update::transport (doc/benchmarks.md,
     /// "Deforming contact", measures both against a rebuild's normals).
     Normal_update normals = Normal_update::transport;
-    /// Worker threads of a frame's update (0: all available); ignored without TBB. The frame does
-    /// not depend on it.
-    unsigned threads = 0;
+    /// Worker threads of a frame's update, 1 to 4096; unset (default): all available. Ignored
+    /// without TBB. The frame does not depend on it.
+    std::optional<unsigned> threads = std::nullopt;
 };
 
 /// What the last frame of a deforming object measured.

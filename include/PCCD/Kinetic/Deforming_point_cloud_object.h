@@ -256,6 +256,7 @@ private:
             throw Invalid_input(internal::concat("deforming point cloud: unknown stretch action ", int(d.on_stretch)));
         if (d.normals != Normal_update::transport && d.normals != Normal_update::refit)
             throw Invalid_input(internal::concat("deforming point cloud: unknown normal update ", int(d.normals)));
+        internal::check_threads(d.threads, "deforming point cloud: threads");
         return d;
     }
 

@@ -61,6 +61,40 @@ inline void read_scan_section(Binary_reader& in, std::uint64_t n, Scan_estimate&
     in.read(domain->data(), sizeof(double) * std::size_t(radii));
 }
 
+/// The opening of an object file: magic, format version (1 to `newest`), byte-order mark, and the
+/// checksum over the whole file. Returns the version; fails on `in` otherwise.
+inline std::uint32_t read_object_file_header(Binary_reader& in, const std::string& bytes, std::uint32_t newest)
+{
+    char magic[8];
+    in.read(magic, sizeof magic);
+    if (std::memcmp(magic, object_magic, sizeof magic) != 0) in.fail("not a PCCD object file");
+    const auto version = in.get<std::uint32_t>();
+    if (version == 0 || version > newest)
+        in.fail(concat("object file format version ", version, ", this PCCD reads versions 1 to ", newest));
+    if (in.get<std::uint32_t>() != byte_order_mark) in.fail("written on a machine of another byte order");
+    if (bytes.size() < sizeof(std::uint64_t)) in.fail("truncated file");
+    Word_checksum checksum;
+    checksum.update(bytes.data(), bytes.size() - sizeof(std::uint64_t));
+    const auto stored = decode_little_endian<std::uint64_t>(bytes.data() + bytes.size() - sizeof(std::uint64_t));
+    if (stored != checksum.value()) in.fail("checksum mismatch: the file is truncated or corrupted");
+    return version;
+}
+
+/// The input-index section of an object file (format version >= 4): one index per point, each below
+/// scan.input_points and none repeated or an outlier's.
+inline void read_input_indices(Binary_reader& in, const Scan_estimate& scan, std::vector<std::uint32_t>& input_index)
+{
+    if (in.get<std::uint64_t>() != input_index.size()) in.fail("the input indices are not one per point");
+    in.read(input_index.data(), sizeof(std::uint32_t) * input_index.size());
+    std::vector<bool> seen(scan.input_points); // an index is a kept point's or an outlier's, once
+    for (const std::uint32_t i : scan.outliers) seen[i] = true;
+    for (const std::uint32_t i : input_index) {
+        if (i >= scan.input_points || seen[i])
+            in.fail(concat("input index ", i, " repeated or beyond the ", scan.input_points, " points given"));
+        seen[i] = true;
+    }
+}
+
 } // namespace internal
 
 // File format (version 4, little-endian whatever the host, with a byte-order mark, no padding):
@@ -125,22 +159,7 @@ Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path,
 {
     const std::string bytes = internal::read_binary_file(path);
     internal::Binary_reader in(bytes, path);
-    char magic[8];
-    in.read(magic, sizeof magic);
-    if (std::memcmp(magic, internal::object_magic, sizeof magic) != 0) in.fail("not a PCCD object file");
-    const auto version = in.get<std::uint32_t>();
-    if (version == 0 || version > file_version)
-        in.fail(internal::concat("object file format version ", version, ", this PCCD reads versions 1 to ",
-                                 file_version));
-    if (in.get<std::uint32_t>() != internal::byte_order_mark) in.fail("written on a machine of another byte order");
-    if (bytes.size() < sizeof(std::uint64_t)) in.fail("truncated file");
-    {
-        internal::Word_checksum checksum;
-        checksum.update(bytes.data(), bytes.size() - sizeof(std::uint64_t));
-        const auto stored =
-            internal::decode_little_endian<std::uint64_t>(bytes.data() + bytes.size() - sizeof(std::uint64_t));
-        if (stored != checksum.value()) in.fail("checksum mismatch: the file is truncated or corrupted");
-    }
+    const std::uint32_t version = internal::read_object_file_header(in, bytes, file_version);
     const auto n = in.get<std::uint64_t>();
     if (n < 2 || n >= std::uint64_t(std::numeric_limits<std::uint32_t>::max()) ||
         in.remaining() < 6 * sizeof(double) * n)
@@ -171,15 +190,7 @@ Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path,
     }
     std::vector<std::uint32_t> input_index(n);
     if (version >= 4) {
-        if (in.get<std::uint64_t>() != n) in.fail("the input indices are not one per point");
-        in.read(input_index.data(), sizeof(std::uint32_t) * n);
-        std::vector<bool> seen(scan.input_points); // an index is a kept point's or an outlier's, once
-        for (const std::uint32_t i : scan.outliers) seen[i] = true;
-        for (const std::uint32_t i : input_index) {
-            if (i >= scan.input_points || seen[i])
-                in.fail(internal::concat("input index ", i, " repeated or beyond the ", scan.input_points, " points given"));
-            seen[i] = true;
-        }
+        internal::read_input_indices(in, scan, input_index);
     } else {
         std::iota(input_index.begin(), input_index.end(), std::uint32_t(0));
     }
