@@ -87,9 +87,9 @@ bool sample_leaf(const Point_cloud_hierarchy& s, Point_cloud_hierarchy::Index ls
     return true;
 }
 
-/// Takes, in the role of `s_role`, the points of `ks` whose bit is set in `inside` (leaf `ls` of s,
-/// in hierarchy order) that it has not sampled yet and that no sample covers, up to `cap` samples.
-/// Returns false when the query must stop.
+/// Samples, in `role`, the points of leaf `ls` of s whose bit is set in `inside` (bit k: the leaf's
+/// k-th point in hierarchy order) that the role has not sampled yet and that no sample covers, up
+/// to `cap` samples. Returns false when the query must stop.
 template <class Role_type>
 bool sample_marked(const Point_cloud_hierarchy& s, Point_cloud_hierarchy::Index ls, std::uint64_t inside,
                    std::size_t cap, std::unordered_set<std::uint32_t>& done, Covering_grid& cover, Role_type& role)
