@@ -212,7 +212,7 @@ TEST_CASE("Point_cloud_object stores its points in spatial order and maps them b
         CHECK_FALSE(seen[k]);
         seen[k] = true;
         CHECK(object.cloud().position(std::uint32_t(i)) == given[k]);
-        CHECK(unordered.cloud().position(unordered.input_index(i)) != Eigen::Vector3d(40.0, 0.0, 0.0));
+        CHECK(unordered.cloud().position(std::uint32_t(i)) != Eigen::Vector3d(40.0, 0.0, 0.0));
     }
     CHECK_FALSE(seen[1000]);
     CHECK_FALSE(seen[3001]);
