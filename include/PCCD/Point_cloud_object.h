@@ -129,7 +129,7 @@ public:
         requires std::same_as<Normals, Eigen::Matrix3Xd>
     Point_cloud_object(const Eigen::Matrix3Xd& points, const Normals& normals,
                        const Point_cloud_object_options& options = {})
-        : Point_cloud_object(timed_cloud(points, options), checked_normals(points, normals), options)
+        : Point_cloud_object(timed_cloud(points, options), normals, options)
     {
     }
 
@@ -343,21 +343,10 @@ private:
         std::vector<std::uint32_t> input_index;
         if (options.spatial_order) {
             input_index = internal::spatial_order(coordinates);
-            typename Point_cloud<K>::Coordinates sorted(3, coordinates.cols());
-            for (Eigen::Index i = 0; i < sorted.cols(); ++i)
-                sorted.col(i) = coordinates.col(Eigen::Index(input_index[std::size_t(i)]));
-            coordinates = std::move(sorted);
+            coordinates = internal::gather_columns(coordinates, input_index);
         }
         Point_cloud<K> cloud(std::move(coordinates));
         return {std::move(cloud), stage.finish(), std::move(input_index)};
-    }
-
-    static Eigen::Matrix3Xd checked_normals(const Eigen::Matrix3Xd& points, const Eigen::Matrix3Xd& normals)
-    {
-        if (normals.cols() != points.cols())
-            throw Invalid_input(internal::concat("point cloud object: ", normals.cols(), " normals for ", points.cols(),
-                                                 " points (need one per point)"));
-        return normals;
     }
 
     template <class Range, class NormalMap>
@@ -382,12 +371,11 @@ private:
                           Orientation_report orientation, bool normals_given, Scan_estimate scan,
                           Preprocessing_times timings, const Point_cloud_object_options& options,
                           std::vector<std::uint32_t> input_index);
-    /// Removes the points `outliers` (ascending indices) of `cloud`, and their given normals, in place.
+    /// Removes the points `outliers` (ascending positions in `cloud`) of `cloud`, their given normals
+    /// and their entries of `input_index`, in place, and turns `outliers` into the input indices of
+    /// those points, ascending.
     static void remove_outliers(Point_cloud<K>& cloud, std::optional<Eigen::Matrix3Xd>& given_normals,
-                                const std::vector<std::uint32_t>& outliers);
-    /// Drops the entries `outliers` (ascending positions in the cloud) of `input_index`, and turns
-    /// `outliers` into the input indices of those points, ascending.
-    static void keep_input_indices(std::vector<std::uint32_t>& input_index, std::vector<std::uint32_t>& outliers);
+                                std::vector<std::uint32_t>& input_index, std::vector<std::uint32_t>& outliers);
     /// Checks the cloud and the options; returns each point's input index (the identity when the
     /// points kept their order) and puts the given normals in the cloud's order.
     static std::vector<std::uint32_t> checked_input(Timed_cloud& built, std::optional<Eigen::Matrix3Xd>& given_normals,

@@ -41,47 +41,27 @@ auto Point_cloud_object<K>::make_data(Point_cloud<K> cloud, std::shared_ptr<cons
 
 template <PointCloudKernel K>
 void Point_cloud_object<K>::remove_outliers(Point_cloud<K>& cloud, std::optional<Eigen::Matrix3Xd>& given_normals,
-                                            const std::vector<std::uint32_t>& outliers)
+                                            std::vector<std::uint32_t>& input_index, std::vector<std::uint32_t>& outliers)
 {
     if (outliers.empty()) return;
     if (cloud.size() - outliers.size() < 2)
         throw Invalid_input(internal::concat("point cloud object: ", outliers.size(), " of the ", cloud.size(),
                                              " points are isolated outliers; fewer than two points are left"));
-    const Eigen::Index kept = Eigen::Index(cloud.size() - outliers.size());
-    typename Point_cloud<K>::Coordinates inliers(3, kept);
-    Eigen::Matrix3Xd normals(3, given_normals ? kept : 0);
-    Eigen::Index next = 0;
-    std::size_t skip = 0;
-    for (std::size_t i = 0; i < cloud.size(); ++i) {
-        if (skip < outliers.size() && outliers[skip] == i) {
-            ++skip;
-            continue;
-        }
-        inliers.col(next) = cloud.position(std::uint32_t(i));
-        if (given_normals) normals.col(next) = given_normals->col(Eigen::Index(i));
-        ++next;
-    }
-    cloud = Point_cloud<K>(std::move(inliers));
-    if (given_normals) given_normals = std::move(normals);
-}
-
-template <PointCloudKernel K>
-void Point_cloud_object<K>::keep_input_indices(std::vector<std::uint32_t>& input_index,
-                                               std::vector<std::uint32_t>& outliers)
-{
-    if (outliers.empty()) return;
     std::vector<std::uint32_t> kept;
-    kept.reserve(input_index.size() - outliers.size());
+    kept.reserve(cloud.size() - outliers.size());
     std::size_t skip = 0;
-    for (std::size_t i = 0; i < input_index.size(); ++i) {
+    for (std::uint32_t i = 0; i < cloud.size(); ++i) {
         if (skip < outliers.size() && outliers[skip] == i) {
             outliers[skip++] = input_index[i];
             continue;
         }
-        kept.push_back(input_index[i]);
+        kept.push_back(i);
     }
-    std::sort(outliers.begin(), outliers.end());
+    cloud = Point_cloud<K>(internal::gather_columns(cloud.coordinates(), kept));
+    if (given_normals) given_normals = internal::gather_columns(*given_normals, kept);
+    for (std::size_t k = 0; k < kept.size(); ++k) kept[k] = input_index[kept[k]];
     input_index = std::move(kept);
+    std::sort(outliers.begin(), outliers.end());
 }
 
 template <PointCloudKernel K>
@@ -108,10 +88,7 @@ std::vector<std::uint32_t> Point_cloud_object<K>::checked_input(Timed_cloud& bui
         input_index.resize(cloud.size());
         std::iota(input_index.begin(), input_index.end(), std::uint32_t(0));
     } else if (given_normals) {
-        Eigen::Matrix3Xd ordered(3, given_normals->cols());
-        for (Eigen::Index i = 0; i < ordered.cols(); ++i)
-            ordered.col(i) = given_normals->col(Eigen::Index(input_index[std::size_t(i)]));
-        given_normals = std::move(ordered);
+        given_normals = internal::gather_columns(*given_normals, input_index);
     }
     return input_index;
 }
@@ -165,8 +142,7 @@ auto Point_cloud_object<K>::preprocess(Timed_cloud built, std::optional<Eigen::M
         if (options.outliers.remove) {
             spacing = local_spacing(cloud, options.outliers.neighbors, true, options.outliers.threads);
             scan.outliers = find_outliers(*spacing, options.outliers);
-            remove_outliers(cloud, given_normals, scan.outliers);
-            keep_input_indices(input_index, scan.outliers);
+            remove_outliers(cloud, given_normals, input_index, scan.outliers);
             if (!scan.outliers.empty()) spacing.reset(); // the cloud changed
         }
         timings.outliers = stage.finish();

@@ -1,7 +1,7 @@
 // PCCD/internal/spatial_order.h -- the order of a cloud's points along a Morton (Z-order) curve
-// over their bounding box. Graph construction runs its kd-tree queries in this order, and
-// Point_cloud_object stores its points in it, so that points near in space are near in memory
-// (doc/manual/surface.md, "One call: Point_cloud_object").
+// over their bounding box, and a matrix's columns gathered in such an order. Graph construction
+// runs its kd-tree queries in this order, and Point_cloud_object stores its points in it, so that
+// points near in space are near in memory (doc/manual/surface.md, "One call: Point_cloud_object").
 #pragma once
 
 #include <algorithm>
@@ -68,6 +68,15 @@ std::vector<std::uint32_t> spatial_order(const Coordinates& c)
     std::sort(keys.begin(), keys.end());
     for (std::size_t i = 0; i < n; ++i) order[i] = keys[i].second;
     return order;
+}
+
+/// The columns `order[0]`, `order[1]`, ... of `m`, in that order (a reordering or a subset).
+template <class Matrix>
+Matrix gather_columns(const Matrix& m, const std::vector<std::uint32_t>& order)
+{
+    Matrix out(m.rows(), Eigen::Index(order.size()));
+    for (std::size_t i = 0; i < order.size(); ++i) out.col(Eigen::Index(i)) = m.col(Eigen::Index(order[i]));
+    return out;
 }
 
 } // namespace PCCD::internal
