@@ -1,6 +1,7 @@
 // Tests of PCCD/Hierarchy/Point_cloud_hierarchy.h with reaches, against brute force over the points:
 // every point in exactly one leaf, every box contains its children and points, a node's reach is
-// the largest of its points', the ordered points are the points in order(); bad reaches throw.
+// the largest of its points', every slab holds its node's points and is thin on a plane, the
+// ordered points are the points in order(); bad reaches throw; a refit drops the slabs.
 #include <PCCD/Hierarchy/Point_cloud_hierarchy.h>
 
 #include <catch2/catch.hpp>
@@ -30,6 +31,12 @@ TEST_CASE("A hierarchy with reaches: leaves partition the points, boxes and reac
                     largest = std::max(largest, reach(k));
                 }
                 CHECK(node.reach == largest);
+                // The slab holds the node's points (computed alike, so exactly) and its normal is a unit vector.
+                REQUIRE(node.slab_normal.norm() == Approx(1.0).epsilon(1e-12));
+                for (const Index k : h.points_of(i)) {
+                    CHECK(node.slab_normal.dot(p.col(k)) >= node.slab_min);
+                    CHECK(node.slab_normal.dot(p.col(k)) <= node.slab_max);
+                }
                 if (node.is_leaf()) {
                     CHECK(node.count <= std::max<std::size_t>(leaf, 1));
                     for (const Index k : h.points_of(i)) ++seen[k];
@@ -46,6 +53,25 @@ TEST_CASE("A hierarchy with reaches: leaves partition the points, boxes and reac
                 CHECK(h.ordered_points()(3, Eigen::Index(k)) == reach(h.order()[k]));
             }
         }
+    }
+}
+
+TEST_CASE("A hierarchy's slabs are normal to the points' direction of least spread: thin on a plane", "[hierarchy]")
+{
+    // Points on the plane n . p = 0.2, n a unit normal not along an axis, so every box is thick.
+    const Eigen::Vector3d n = Eigen::Vector3d(1.0, -2.0, 2.0).normalized();
+    const Eigen::Vector3d u = n.unitOrthogonal(), v = n.cross(u);
+    const Eigen::Matrix3Xd uv = pccd_test::hierarchy_points(2000, 17, 0.0);
+    Eigen::Matrix3Xd p(3, uv.cols());
+    for (Eigen::Index i = 0; i < p.cols(); ++i) p.col(i) = 0.2 * n + uv(0, i) * u + uv(1, i) * v;
+    const PCCD::Point_cloud_hierarchy h(p, {.leaf_size = 8});
+    for (Index i = 0; i < h.nodes().size(); ++i) {
+        const auto& node = h.node(i);
+        if (node.count < 3) continue;
+        INFO("node " << i << " of " << node.count << " points");
+        CHECK(std::abs(node.slab_normal.dot(n)) == Approx(1.0).margin(1e-6));
+        CHECK(node.slab_max - node.slab_min <= 1e-6 * node.box.diagonal().norm());
+        CHECK(std::abs(0.5 * (node.slab_max + node.slab_min)) == Approx(0.2).margin(1e-6));
     }
 }
 
@@ -102,6 +128,10 @@ TEST_CASE("A refitted hierarchy keeps the tree and has tight boxes and reaches o
             CHECK(node.box.min() == box.min());
             CHECK(node.box.max() == box.max());
             CHECK(node.reach == largest);
+            // The old slabs do not bound the new positions: a refitted node has none.
+            CHECK(node.slab_normal.isZero(0.0));
+            CHECK(node.slab_min == -std::numeric_limits<double>::infinity());
+            CHECK(node.slab_max == std::numeric_limits<double>::infinity());
         }
         for (std::size_t k = 0; k < n; ++k) {
             CHECK(r.ordered_points().col(Eigen::Index(k)).head<3>() == q.col(r.order()[k]));

@@ -1,6 +1,7 @@
 // Tests of PCCD/Hierarchy/reach_traversal.h against brute force over all point pairs: within_reach,
 // points_within_reach, reaches_meet, leaf_pair_gap and the leaf pairs of
-// for_each_leaf_pair_within_reach, for random clouds, reaches, rules and poses, in both child orders.
+// for_each_leaf_pair_within_reach (both margins: sum and larger reach), for random clouds, reaches,
+// rules and poses, in both child orders; the slabs prune node pairs of tilted flat patches.
 #include <PCCD/Hierarchy/reach_traversal.h>
 
 #include <catch2/catch.hpp>
@@ -73,7 +74,7 @@ TEST_CASE("Reach tests agree with brute force over all point pairs", "[hierarchy
         // Every leaf pair holding a qualifying point pair is reported, in either child order, and
         // leaf_pair_gap() is the brute-force minimum over its points.
         for (const bool closest_first : {false, true}) {
-            std::set<std::pair<Index, Index>> reported;
+            std::set<std::pair<Index, Index>> reported, either;
             PCCD::for_each_leaf_pair_within_reach(
                 c.s, c.t, s_to_t, rule_s, rule_t,
                 [&](Index i, Index j) {
@@ -81,21 +82,83 @@ TEST_CASE("Reach tests agree with brute force over all point pairs", "[hierarchy
                     return true;
                 },
                 closest_first);
+            PCCD::for_each_leaf_pair_within_reach(
+                c.s, c.t, s_to_t, rule_s, rule_t,
+                [&](Index i, Index j) {
+                    either.emplace(i, j);
+                    return true;
+                },
+                closest_first, true);
             for (Index i = 0; i < c.s.nodes().size(); ++i) {
                 if (!c.s.node(i).is_leaf()) continue;
                 for (Index j = 0; j < c.t.nodes().size(); ++j) {
                     if (!c.t.node(j).is_leaf()) continue;
-                    double gap = std::numeric_limits<double>::infinity();
+                    double gap = std::numeric_limits<double>::infinity(), either_gap = gap;
                     for (const Index a : c.s.points_of(i))
-                        for (const Index b : c.t.points_of(j))
-                            gap = std::min(gap, (s_to_t.transform_point(Eigen::Vector3d(c.ps.col(a))) - c.pt.col(b)).norm() -
-                                                    rule_s(c.rs(a)) - rule_t(c.rt(b)));
+                        for (const Index b : c.t.points_of(j)) {
+                            const double d = (s_to_t.transform_point(Eigen::Vector3d(c.ps.col(a))) - c.pt.col(b)).norm();
+                            gap = std::min(gap, d - rule_s(c.rs(a)) - rule_t(c.rt(b)));
+                            either_gap = std::min(either_gap, d - std::max(rule_s(c.rs(a)), rule_t(c.rt(b))));
+                        }
                     if (gap <= 0.0) CHECK(reported.count({i, j}) == 1);
+                    if (either_gap <= 0.0) CHECK(either.count({i, j}) == 1);
                     if (reported.count({i, j}) == 1)
                         CHECK(PCCD::leaf_pair_gap(c.s, i, c.t, j, s_to_t, rule_s, rule_t) == Approx(gap).margin(1e-12));
                 }
             }
         }
+    }
+}
+
+TEST_CASE("Slabs prune node pairs of tilted patches whose boxes overlap, and keep every leaf pair within reach", "[hierarchy]")
+{
+    // Two flat patches (thickness 0.002) in a plane through the origin with a normal n along no
+    // axis, so that their boxes are thick: t as it is, s turned about n and lifted along it by
+    // 0.05 (apart: the reaches sum to 0.02), by 0.015 (meeting everywhere), or turned by 40 degrees
+    // about an axis in the plane (crossing along a line). The same trees refitted over the same
+    // points have no slabs: the reference of what the boxes alone visit.
+    const Eigen::Matrix3d q = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1.0, 2.0, 0.5).normalized()).toRotationMatrix();
+    const Eigen::Vector3d n = q.col(2);
+    const Eigen::Matrix3Xd ps = q * pccd_test::hierarchy_points(3000, 5, 0.001);
+    const Eigen::Matrix3Xd pt = q * pccd_test::hierarchy_points(3000, 6, 0.001);
+    const Eigen::VectorXd rs = Eigen::VectorXd::Constant(3000, 0.01), rt = rs;
+    const PCCD::Point_cloud_hierarchy s(ps, rs), t(pt, rt);
+    const PCCD::Point_cloud_hierarchy s_boxes(s, ps, rs), t_boxes(t, pt, rt);
+    const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.3, n).toRotationMatrix();
+    const Eigen::Matrix3d cross = Eigen::AngleAxisd(40.0 * 3.14159265358979 / 180.0, q.col(0)).toRotationMatrix();
+    struct Case {
+        PCCD::Rigid_transform_3<double> s_to_t;
+        bool meet;
+        double most; // node pairs with slabs, at most this fraction of the boxes' alone
+    };
+    const Case cases[] = {{PCCD::Rigid_transform_3<double>(turn, 0.05 * n), false, 0.01},
+                          {PCCD::Rigid_transform_3<double>(turn, 0.015 * n), true, 1.0},
+                          {PCCD::Rigid_transform_3<double>(cross, Eigen::Vector3d::Zero()), true, 0.5}};
+    for (const Case& c : cases) {
+        const PCCD::Reach_rule rule{};
+        std::set<std::pair<Index, Index>> with_slabs, boxes_only;
+        const PCCD::Reach_counters c1 = PCCD::for_each_leaf_pair_within_reach(s, t, c.s_to_t, rule, rule, [&](Index i, Index j) {
+            with_slabs.emplace(i, j);
+            return true;
+        });
+        const PCCD::Reach_counters c2 = PCCD::for_each_leaf_pair_within_reach(
+            s_boxes, t_boxes, c.s_to_t, rule, rule, [&](Index i, Index j) {
+                boxes_only.emplace(i, j);
+                return true;
+            });
+        INFO("meet " << c.meet << ": node pairs " << c1.node_pairs << " with slabs, " << c2.node_pairs << " boxes only");
+        CHECK(std::includes(boxes_only.begin(), boxes_only.end(), with_slabs.begin(), with_slabs.end()));
+        CHECK(double(c1.node_pairs) <= c.most * double(c2.node_pairs));
+        // Every leaf pair with a point pair within the sum of its reaches is still visited.
+        std::size_t within = 0;
+        for (const auto& [i, j] : boxes_only)
+            if (PCCD::leaf_pair_gap(s, i, t, j, c.s_to_t, rule, rule) <= 0.0) {
+                ++within;
+                CHECK(with_slabs.count({i, j}) == 1);
+            }
+        CHECK((within > 0) == c.meet);
+        PCCD::Reach_counters counters;
+        CHECK(PCCD::reaches_meet(s, t, c.s_to_t, rule, rule, counters) == c.meet);
     }
 }
 

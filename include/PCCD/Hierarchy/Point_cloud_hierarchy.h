@@ -1,6 +1,7 @@
 // PCCD/Hierarchy/Point_cloud_hierarchy.h -- a static bounding-volume hierarchy over the points of a
 // cloud (doc/algorithms.md "Point cloud hierarchy"): axis-aligned boxes built top-down by median
-// splits of the longest side, leaves of a few points, logarithmic height. Each point may carry a
+// splits of the longest side, leaves of a few points, logarithmic height; each node's points are
+// also bounded by a slab normal to their direction of least spread, thin on a surface patch. Each point may carry a
 // reach (how far from it its surface can be defined, doc/manual/hierarchy.md) and each node the
 // largest reach of its points; the points and reaches are also stored in hierarchy order, so that
 // a leaf's data is contiguous. The intersection queries use it to restrict their work to the parts
@@ -20,6 +21,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 #include <PCCD/Error.h>
@@ -57,6 +59,14 @@ public:
         Index right = no_child;
         /// The largest reach of the node's points (0 when the hierarchy was built without reaches).
         double reach = 0.0;
+        /// A slab holding the node's points: every point p satisfies slab_min <= slab_normal . p <=
+        /// slab_max. The normal is the direction of least spread of the points (their covariance's
+        /// smallest eigenvector), so on a surface patch the slab is thin where the box is not; box
+        /// and slab together bound the points. A refitted tree has no slabs: a zero normal and an
+        /// infinite interval, which holds every point.
+        Eigen::Vector3d slab_normal = Eigen::Vector3d::Zero();
+        double slab_min = -std::numeric_limits<double>::infinity();
+        double slab_max = std::numeric_limits<double>::infinity();
 
         bool is_leaf() const { return right == no_child; }
     };
@@ -118,6 +128,7 @@ public:
             node.reach = node.is_leaf() ? m_ordered.row(3).segment(node.first, node.count).maxCoeff()
                                         : std::max(m_nodes[left(Index(i))].reach, m_nodes[node.right].reach);
         }
+        compute_slabs();
     }
 
     /// The tree of `topology` (same nodes, same point order, same leaf size) over new positions of
@@ -126,7 +137,8 @@ public:
     /// is the bottom-up refit a deforming cloud uses instead of a rebuild
     /// (doc/manual/kinetic.md, "Deforming point clouds"): the boxes stay exact, only their
     /// tightness depends on how far the points moved relative to each other since `topology` was
-    /// built.
+    /// built. The refitted nodes have no slabs (Node::slab_normal zero): recomputing them would
+    /// cost O(N log N) per refit.
     /// \throws Invalid_input if `topology` is empty, the number of points differs from its size, a
     ///         coordinate is not finite, or `reach` is neither empty nor of size N or holds a value
     ///         that is not finite or < 0.
@@ -160,6 +172,10 @@ public:
         // Children follow their parents in depth-first order: a backward sweep sees children first.
         for (std::size_t i = m_nodes.size(); i-- > 0;) {
             Node& node = m_nodes[i];
+            // The topology's slabs bound the old positions only; a refitted tree has none.
+            node.slab_normal.setZero();
+            node.slab_min = -std::numeric_limits<double>::infinity();
+            node.slab_max = std::numeric_limits<double>::infinity();
             if (node.is_leaf()) {
                 const auto block = m_ordered.middleCols(node.first, node.count);
                 node.box = Eigen::AlignedBox3d(block.topRows<3>().rowwise().minCoeff(),
@@ -230,6 +246,54 @@ private:
         build(points, first, middle);
         m_nodes[id].right = build(points, middle, last);
         return id;
+    }
+
+    /// The slab of every node: the points' second moments are summed bottom-up (relative to the
+    /// root box's centre), the normal is their covariance's smallest eigenvector, and the interval
+    /// is taken over the node's points. O(N log N).
+    void compute_slabs()
+    {
+        const Eigen::Vector3d origin = m_nodes.front().box.center();
+        struct Moments {
+            Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+            Eigen::Matrix3d squares = Eigen::Matrix3d::Zero();
+        };
+        std::vector<Moments> moments(m_nodes.size());
+        for (std::size_t i = m_nodes.size(); i-- > 0;) {
+            const Node& node = m_nodes[i];
+            Moments& m = moments[i];
+            if (node.is_leaf()) {
+                for (Index k = node.first; k < node.first + node.count; ++k) {
+                    const Eigen::Vector3d p = m_ordered.col(k).head<3>() - origin;
+                    m.sum += p;
+                    m.squares += p * p.transpose();
+                }
+            } else {
+                const Moments& a = moments[left(Index(i))];
+                const Moments& b = moments[node.right];
+                m.sum = a.sum + b.sum;
+                m.squares = a.squares + b.squares;
+            }
+        }
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+        for (std::size_t i = 0; i < m_nodes.size(); ++i) {
+            Node& node = m_nodes[i];
+            const Eigen::Vector3d mean = moments[i].sum / double(node.count);
+            const Eigen::Matrix3d covariance = moments[i].squares / double(node.count) - mean * mean.transpose();
+            solver.computeDirect(covariance);
+            Eigen::Vector3d normal = solver.eigenvectors().col(0);
+            if (solver.info() != Eigen::Success || !internal::all_finite(normal) || !(normal.norm() > 0.5)) continue;
+            normal.normalize();
+            double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+            for (Index k = node.first; k < node.first + node.count; ++k) {
+                const double d = normal.dot(m_ordered.col(k).head<3>());
+                lo = std::min(lo, d);
+                hi = std::max(hi, d);
+            }
+            node.slab_normal = normal;
+            node.slab_min = lo;
+            node.slab_max = hi;
+        }
     }
 
     std::size_t height_of(Index i) const

@@ -4,7 +4,7 @@
 // reach of the other, and whether two clouds have a pair of points closer than the sum of their
 // reaches. The implicit surface of a cloud is defined only within the reach of its points, so these
 // tests bound where f is defined and where two surfaces can share a zero, without evaluating f.
-// Boxes grown by a node's largest reach prune node pairs; leaves compare points.
+// Boxes grown by a node's largest reach, and the nodes' slabs, prune node pairs; leaves compare points.
 #pragma once
 
 #include <algorithm>
@@ -66,6 +66,44 @@ inline bool grown_boxes_may_overlap(const Eigen::AlignedBox3d& a, const Eigen::M
         if (std::abs(t(i)) > hb(i) + abs_r.row(i).dot(ha)) return false;
     for (int j = 0; j < 3; ++j)
         if (std::abs(t.dot(r.col(j))) > ha(j) + abs_r.col(j).dot(hb)) return false;
+    return true;
+}
+
+/// An interval holding m . p for the points p of `node` (its local frame; the node has a slab):
+/// with m = a n + w, w normal to the slab's normal n, a n . p lies in the slab's interval scaled by
+/// a and w . p in the box's projection onto w. For m along n it is the slab's own interval, however
+/// thick the box; for m normal to n, the box's projection.
+inline std::pair<double, double> node_extent_along(const Point_cloud_hierarchy::Node& node, const Eigen::Vector3d& m)
+{
+    const Eigen::Vector3d c = node.box.center(), h = 0.5 * (node.box.max() - node.box.min());
+    const double a = m.dot(node.slab_normal);
+    const Eigen::Vector3d w = m - a * node.slab_normal;
+    const double wc = w.dot(c), wh = w.cwiseAbs().dot(h);
+    return {(a >= 0.0 ? a * node.slab_min : a * node.slab_max) + wc - wh,
+            (a >= 0.0 ? a * node.slab_max : a * node.slab_min) + wc + wh};
+}
+
+/// Whether node `ns` of s (mapped by rotation r and translation `shift`) and node `nt` of t may hold
+/// points closer than `margin`, by their slabs: along each node's slab normal, the node's slab
+/// against the other node's extent (node_extent_along). False only when one of the two normals
+/// separates them. A node without a slab (zero normal, infinite interval) never separates.
+inline bool slabs_may_overlap(const Point_cloud_hierarchy::Node& ns, const Eigen::Matrix3d& r,
+                              const Eigen::Vector3d& shift, const Point_cloud_hierarchy::Node& nt, double margin)
+{
+    if (std::isfinite(ns.slab_min)) {
+        // s's slab in t's frame: normal r n_s, interval shifted by (r n_s) . shift.
+        const Eigen::Vector3d m = r * ns.slab_normal;
+        const double offset = m.dot(shift);
+        const auto [lo, hi] = node_extent_along(nt, m);
+        if (lo > ns.slab_max + offset + margin || hi < ns.slab_min + offset - margin) return false;
+    }
+    if (std::isfinite(nt.slab_min)) {
+        // t's slab normal n_t seen from s: n_t . (r p + shift) = (r^T n_t) . p + n_t . shift.
+        const Eigen::Vector3d u = r.transpose() * nt.slab_normal;
+        const double offset = nt.slab_normal.dot(shift);
+        const auto [lo, hi] = node_extent_along(ns, u);
+        if (lo + offset > nt.slab_max + margin || hi + offset < nt.slab_min - margin) return false;
+    }
     return true;
 }
 
@@ -180,7 +218,9 @@ inline std::pair<std::size_t, double> descend_to_near_point(const Point_cloud_hi
 /// the reach (per `rule_t`) of a point of t: s's box mapped by `s_to_t`, t's box grown by its
 /// node's largest reach (`either`: s's box grown by s's reach or t's by t's, i.e. pairs where a
 /// point of either leaf may lie within the reach of the other's: the margin is the larger reach, not
-/// the sum). Depth-first, descending the node with more points; with `closest_first`
+/// the sum). A node pair is also pruned when either node's slab (Point_cloud_hierarchy::Node)
+/// separates it from the other node's box by more than the margin: a surface's slabs are thin, so
+/// two patches whose boxes overlap without the patches coming close are pruned early. Depth-first, descending the node with more points; with `closest_first`
 /// the child whose box centre lies nearer the other node's centre is visited first (the pairs most
 /// likely to touch early), otherwise the left child. Deterministic. `visit` returns false to stop
 /// the traversal. Returns the counters.
@@ -210,6 +250,8 @@ Reach_counters for_each_leaf_pair_within_reach(const Point_cloud_hierarchy& s, c
         const Eigen::Vector3d centre_s = s_to_t.transform_point(ns.box.center());
         if (!internal::grown_boxes_may_overlap(ns.box, r, abs_r, centre_s, either ? 0.0 : ms, nt.box,
                                                either ? std::max(ms, mt) : mt))
+            continue;
+        if (!internal::slabs_may_overlap(ns, r, s_to_t.translation(), nt, either ? std::max(ms, mt) : ms + mt))
             continue;
         if (ns.is_leaf() && nt.is_leaf()) {
             ++counters.leaf_pairs;
