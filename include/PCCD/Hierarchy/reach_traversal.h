@@ -265,8 +265,9 @@ Reach_counters for_each_leaf_pair_within_reach(const Point_cloud_hierarchy& s, c
         if (descend_s) {
             Index first = s.left(i), second = s.right(i);
             if (closest_first) {
-                const Eigen::Vector3d c = nt.box.center();
-                const auto distance = [&](Index k) { return (s_to_t.transform_point(s.node(k).box.center()) - c).squaredNorm(); };
+                // Distances are the same in s's frame: one mapping of t's centre instead of two of s's.
+                const Eigen::Vector3d c = r.transpose() * (nt.box.center() - s_to_t.translation());
+                const auto distance = [&](Index k) { return (s.node(k).box.center() - c).squaredNorm(); };
                 if (distance(second) < distance(first)) std::swap(first, second);
             }
             stack.emplace_back(second, j);

@@ -74,6 +74,11 @@ std::vector<Cpsp_block> search_cpsp_blocks(const Graph& g, const LengthMap& leng
                     ws.reset();
                     block.sizes.push_back(block.lists.targets.size() - before);
                 }
+                // The lists grew by doubling: without the slack, all blocks together take no more
+                // than the final arrays (the peak memory of the build is both at once).
+                block.lists.targets.shrink_to_fit();
+                block.lists.distances.shrink_to_fit();
+                block.lists.predecessors.shrink_to_fit();
                 return block;
             },
             [&](Cpsp_block block) { blocks.push_back(std::move(block)); });
@@ -81,8 +86,29 @@ std::vector<Cpsp_block> search_cpsp_blocks(const Graph& g, const LengthMap& leng
     return blocks;
 }
 
-/// The blocks' lists scattered into point order (block b's i-th list is point order[b * block size
-/// + i]); each block is released as soon as copied.
+/// One array of the blocks' lists scattered into point order (block b's i-th list is point
+/// order[b * block size + i]); each block's part is released as soon as copied.
+template <class T>
+std::vector<T> scatter_cpsp_array(std::vector<Cpsp_block>& blocks, const std::vector<std::uint32_t>& order,
+                                  const std::vector<std::uint64_t>& offsets, std::vector<T> Cpsp_list::*member)
+{
+    std::vector<T> out(offsets.back());
+    for (std::size_t b = 0; b < blocks.size(); ++b) {
+        std::vector<T>& from = blocks[b].lists.*member;
+        std::size_t at = 0;
+        for (std::size_t i = 0; i < blocks[b].sizes.size(); ++i) {
+            const std::size_t size = blocks[b].sizes[i];
+            std::copy_n(from.begin() + std::ptrdiff_t(at), size,
+                        out.begin() + std::ptrdiff_t(offsets[order[b * cpsp_block_size + i]]));
+            at += size;
+        }
+        std::vector<T>().swap(from); // release as soon as copied
+    }
+    return out;
+}
+
+/// The blocks' lists scattered into point order, one array at a time, so that the peak memory is
+/// the blocks plus one array (not plus all three).
 inline Cpsp_arrays scatter_cpsp_blocks(std::vector<Cpsp_block>& blocks, const std::vector<std::uint32_t>& order)
 {
     const std::size_t n = order.size();
@@ -92,23 +118,10 @@ inline Cpsp_arrays scatter_cpsp_blocks(std::vector<Cpsp_block>& blocks, const st
         for (std::size_t i = 0; i < blocks[b].sizes.size(); ++i)
             a.offsets[std::size_t(order[b * cpsp_block_size + i]) + 1] = blocks[b].sizes[i];
     for (std::size_t p = 0; p < n; ++p) a.offsets[p + 1] += a.offsets[p];
-    a.targets.resize(a.offsets[n]);
-    a.distances.resize(a.offsets[n]);
-    a.predecessors.resize(a.offsets[n]);
-    for (std::size_t b = 0; b < blocks.size(); ++b) {
-        const Cpsp_list& lists = blocks[b].lists;
-        std::size_t from = 0;
-        for (std::size_t i = 0; i < blocks[b].sizes.size(); ++i) {
-            const std::size_t size = blocks[b].sizes[i];
-            const std::uint64_t to = a.offsets[order[b * cpsp_block_size + i]];
-            std::copy_n(lists.targets.begin() + std::ptrdiff_t(from), size, a.targets.begin() + std::ptrdiff_t(to));
-            std::copy_n(lists.distances.begin() + std::ptrdiff_t(from), size, a.distances.begin() + std::ptrdiff_t(to));
-            std::copy_n(lists.predecessors.begin() + std::ptrdiff_t(from), size,
-                        a.predecessors.begin() + std::ptrdiff_t(to));
-            from += size;
-        }
-        blocks[b] = Cpsp_block(); // release as soon as copied
-    }
+    a.targets = scatter_cpsp_array(blocks, order, a.offsets, &Cpsp_list::targets);
+    a.distances = scatter_cpsp_array(blocks, order, a.offsets, &Cpsp_list::distances);
+    a.predecessors = scatter_cpsp_array(blocks, order, a.offsets, &Cpsp_list::predecessors);
+    blocks.clear();
     return a;
 }
 
