@@ -10,6 +10,7 @@
 #include <PCCD/Proximity_graph/graph_components.h>
 #include <PCCD/Proximity_graph/sphere_of_influence_graph.h>
 #include <PCCD/concepts/PathSource.h>
+#include <PCCD/internal/spatial_order.h>
 
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/dijkstra_shortest_paths.hpp>
@@ -157,6 +158,43 @@ TEST_CASE("both bounded Dijkstras, both graph models and both thread counts agre
     // With virtual edges walked, lists can only grow.
     const PCCD::Close_pairs_shortest_paths walk(f.graph, f.radius, {.use_virtual_edges = true});
     CHECK(walk.num_entries() >= hand.num_entries());
+}
+
+TEST_CASE("a cloud in random order and in spatial order has the same lists (both build orders)", "[graph][geodesic]")
+{
+    // The map takes its sources in point order, appending as it goes, when consecutive points are
+    // close in the graph (spatial order), and breadth-first, scattering at the end, otherwise.
+    const Coordinates random = sphere_sample(4000, 31);
+    const std::vector<std::uint32_t> perm = PCCD::internal::spatial_order(random);
+    Coordinates sorted(3, random.cols());
+    for (Eigen::Index i = 0; i < random.cols(); ++i) sorted.col(i) = random.col(perm[std::size_t(i)]);
+    const Fixture a = make_fixture(random), b = make_fixture(sorted);
+    const auto local = [](const PCCD::Proximity_graph& g) {
+        const std::vector<std::uint32_t> order = PCCD::internal::breadth_first_order(g.graph());
+        std::vector<std::uint32_t> rank(order.size());
+        for (std::size_t k = 0; k < order.size(); ++k) rank[order[k]] = std::uint32_t(k);
+        return PCCD::internal::point_order_is_local(rank);
+    };
+    REQUIRE_FALSE(local(a.graph));
+    REQUIRE(local(b.graph));
+    for (const unsigned threads : {1u, 2u}) {
+        const PCCD::Close_pairs_shortest_paths ma(a.graph, a.radius, {.threads = threads});
+        const PCCD::Close_pairs_shortest_paths mb(b.graph, a.radius, {.threads = threads});
+        REQUIRE(ma.num_entries() == mb.num_entries());
+        for (std::uint32_t i = 0; i < mb.size(); ++i) {
+            // Point i of the sorted cloud is point perm[i] of the random one.
+            std::map<std::uint32_t, float> mapped;
+            for (const auto& [target, d] : as_map(mb, i)) mapped[perm[target]] = d;
+            const std::map<std::uint32_t, float> expected = as_map(ma, perm[i]);
+            REQUIRE(mapped.size() == expected.size());
+            auto y = expected.begin();
+            for (auto x = mapped.begin(); x != mapped.end(); ++x, ++y) {
+                CHECK(x->first == y->first);
+                CHECK(x->second == Approx(y->second).epsilon(1e-6));
+            }
+            CHECK(mb.distances(i).size() == mb.targets(i).size());
+        }
+    }
 }
 
 TEST_CASE("annulus search returns exactly the brute-force entries", "[graph][geodesic]")

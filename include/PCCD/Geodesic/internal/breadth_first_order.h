@@ -1,6 +1,7 @@
-// PCCD/Geodesic/internal/breadth_first_order.h -- the order in which the CPSP map runs its
-// per-source searches (doc/manual/graphs.md, "The CPSP map"): the graph's vertices breadth-first,
-// component by component, so consecutive searches touch mostly the same memory.
+// PCCD/Geodesic/internal/breadth_first_order.h -- the numbering of the graph copy the CPSP map's
+// searches run on, and their order when the points' own order is not local (doc/manual/graphs.md,
+// "The CPSP map"): the graph's vertices breadth-first, component by component, so that a search,
+// and consecutive searches, touch mostly the same memory.
 #pragma once
 
 #include <cstddef>
