@@ -8,6 +8,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -83,19 +84,26 @@ inline std::pair<double, double> node_extent_along(const Point_cloud_hierarchy::
             (a >= 0.0 ? a * node.slab_max : a * node.slab_min) + wc + wh};
 }
 
-/// Whether node `ns` of s (mapped by rotation r and translation `shift`) and node `nt` of t may hold
-/// points closer than `margin`, by their slabs: along each node's slab normal, the node's slab
-/// against the other node's extent (node_extent_along). False only when one of the two normals
-/// separates them. A node without a slab (zero normal, infinite interval) never separates.
-inline bool slabs_may_overlap(const Point_cloud_hierarchy::Node& ns, const Eigen::Matrix3d& r,
+/// Node `ns` of s as seen from t's frame: its box centre, its slab normal and the shift of its
+/// slab's interval (a node pair's test needs them; a walk meets each node in several pairs).
+struct Mapped_node {
+    Point_cloud_hierarchy::Index node = std::numeric_limits<Point_cloud_hierarchy::Index>::max();
+    Eigen::Vector3d centre;
+    Eigen::Vector3d slab_normal;
+    double slab_shift = 0.0;
+};
+
+/// Whether node `ns` of s (seen from t's frame as `mapped`; r the rotation of the motion) and node
+/// `nt` of t may hold points closer than `margin`, by their slabs: along each node's slab normal,
+/// the node's slab against the other node's extent (node_extent_along). False only when one of the
+/// two normals separates them. A node without a slab (zero normal, infinite interval) never separates.
+inline bool slabs_may_overlap(const Point_cloud_hierarchy::Node& ns, const Mapped_node& mapped, const Eigen::Matrix3d& r,
                               const Eigen::Vector3d& shift, const Point_cloud_hierarchy::Node& nt, double margin)
 {
     if (std::isfinite(ns.slab_min)) {
         // s's slab in t's frame: normal r n_s, interval shifted by (r n_s) . shift.
-        const Eigen::Vector3d m = r * ns.slab_normal;
-        const double offset = m.dot(shift);
-        const auto [lo, hi] = node_extent_along(nt, m);
-        if (lo > ns.slab_max + offset + margin || hi < ns.slab_min + offset - margin) return false;
+        const auto [lo, hi] = node_extent_along(nt, mapped.slab_normal);
+        if (lo > ns.slab_max + mapped.slab_shift + margin || hi < ns.slab_min + mapped.slab_shift - margin) return false;
     }
     if (std::isfinite(nt.slab_min)) {
         // t's slab normal n_t seen from s: n_t . (r p + shift) = (r^T n_t) . p + n_t . shift.
@@ -220,9 +228,13 @@ inline std::pair<std::size_t, double> descend_to_near_point(const Point_cloud_hi
 /// point of either leaf may lie within the reach of the other's: the margin is the larger reach, not
 /// the sum). A node pair is also pruned when either node's slab (Point_cloud_hierarchy::Node)
 /// separates it from the other node's box by more than the margin: a surface's slabs are thin, so
-/// two patches whose boxes overlap without the patches coming close are pruned early. Depth-first, descending the node with more points; with `closest_first`
-/// the child whose box centre lies nearer the other node's centre is visited first (the pairs most
-/// likely to touch early), otherwise the left child. Deterministic. `visit` returns false to stop
+/// two patches whose boxes overlap without the patches coming close are pruned early. Depth-first:
+/// a pair of inner nodes is replaced by its four child pairs at once (12 % faster first-hit queries
+/// on the coarse models than descending one node at a time, doc/benchmarks.md), a pair with a leaf
+/// by the other node's two children; with `closest_first` each node's child whose box centre lies
+/// nearer the other node's centre comes first (the pairs most likely to touch early: near child of
+/// s with near child of t, then near with far, far with near, far with far), otherwise the left
+/// child. Deterministic. `visit` returns false to stop
 /// the traversal. Returns the counters.
 /// Complexity: O(node pairs visited), each at most once; O(height) extra space.
 template <class Visitor>
@@ -236,22 +248,31 @@ Reach_counters for_each_leaf_pair_within_reach(const Point_cloud_hierarchy& s, c
     using Index = Point_cloud_hierarchy::Index;
     const Eigen::Matrix3d& r = s_to_t.rotation();
     const Eigen::Matrix3d abs_r = r.cwiseAbs();
-    // A depth-first walk holds at most one pending sibling pair per level of the two trees.
+    // A depth-first walk holds at most three pending sibling pairs per level of the two trees.
     std::vector<std::pair<Index, Index>> stack;
     stack.reserve(128);
     stack.emplace_back(0, 0);
+    // The nodes of s mapped lately (each appears in several pairs), by node index modulo 64.
+    std::array<internal::Mapped_node, 64> mapped_nodes;
     while (!stack.empty()) {
         const auto [i, j] = stack.back();
         stack.pop_back();
         ++counters.node_pairs;
         const auto& ns = s.node(i);
         const auto& nt = t.node(j);
+        internal::Mapped_node& mapped = mapped_nodes[i & 63];
+        if (mapped.node != i) {
+            mapped.node = i;
+            mapped.centre = s_to_t.transform_point(ns.box.center());
+            mapped.slab_normal = r * ns.slab_normal;
+            mapped.slab_shift = mapped.slab_normal.dot(s_to_t.translation());
+        }
+        const Eigen::Vector3d& centre_s = mapped.centre;
         const double ms = rule_s(ns.reach), mt = rule_t(nt.reach);
-        const Eigen::Vector3d centre_s = s_to_t.transform_point(ns.box.center());
         if (!internal::grown_boxes_may_overlap(ns.box, r, abs_r, centre_s, either ? 0.0 : ms, nt.box,
                                                either ? std::max(ms, mt) : mt))
             continue;
-        if (!internal::slabs_may_overlap(ns, r, s_to_t.translation(), nt, either ? std::max(ms, mt) : ms + mt))
+        if (!internal::slabs_may_overlap(ns, mapped, r, s_to_t.translation(), nt, either ? std::max(ms, mt) : ms + mt))
             continue;
         if (ns.is_leaf() && nt.is_leaf()) {
             ++counters.leaf_pairs;
@@ -261,8 +282,24 @@ Reach_counters for_each_leaf_pair_within_reach(const Point_cloud_hierarchy& s, c
             }
             continue;
         }
-        const bool descend_s = !ns.is_leaf() && (nt.is_leaf() || ns.count >= nt.count);
-        if (descend_s) {
+        if (!ns.is_leaf() && !nt.is_leaf()) {
+            // Both inner: the four child pairs at once (a pair of an inner node and a child is
+            // mostly kept where the walk goes on, so testing it first is wasted).
+            Index sc[2] = {s.left(i), s.right(i)}, tc[2] = {t.left(j), t.right(j)};
+            if (closest_first) {
+                const Eigen::Vector3d c = r.transpose() * (nt.box.center() - s_to_t.translation());
+                if ((s.node(sc[1]).box.center() - c).squaredNorm() < (s.node(sc[0]).box.center() - c).squaredNorm())
+                    std::swap(sc[0], sc[1]);
+                if ((t.node(tc[1]).box.center() - centre_s).squaredNorm() < (t.node(tc[0]).box.center() - centre_s).squaredNorm())
+                    std::swap(tc[0], tc[1]);
+            }
+            stack.emplace_back(sc[1], tc[1]);
+            stack.emplace_back(sc[1], tc[0]);
+            stack.emplace_back(sc[0], tc[1]);
+            stack.emplace_back(sc[0], tc[0]);
+            continue;
+        }
+        if (!ns.is_leaf()) {
             Index first = s.left(i), second = s.right(i);
             if (closest_first) {
                 // Distances are the same in s's frame: one mapping of t's centre instead of two of s's.
