@@ -21,6 +21,7 @@
 #include <PCCD/concepts/CollisionObject.h>
 #include <PCCD/concepts/Flightplan.h>
 #include <PCCD/concepts/KineticPrimitive.h>
+#include <PCCD/concepts/PairObserver.h>
 #include <PCCD/concepts/PathSource.h>
 #include <PCCD/concepts/PointCloudKernel.h>
 #include <PCCD/concepts/ProximityGraph.h>
@@ -79,6 +80,7 @@
 #include <PCCD/Intersection/Interpolation_search.h>
 #include <PCCD/Intersection/Intersection_options.h>
 #include <PCCD/Intersection/Intersection_result.h>
+#include <PCCD/Intersection/Intersection_visitor.h>
 #include <PCCD/Intersection/Randomized_sampling.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Intersection/do_intersect_many.h>

@@ -6,6 +6,7 @@
 // raises Invalid_input naming the problem, never a partial answer.
 #include <PCCD/Intersection/Randomized_sampling.h>
 #include <PCCD/Intersection/do_intersect.h>
+#include <PCCD/Intersection/Intersection_visitor.h>
 #include <PCCD/Intersection/do_intersect_many.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
@@ -203,6 +204,12 @@ TEST_CASE("Batch queries reject bad input with Invalid_input", "[intersection][b
         CHECK_THROWS_WITH(PCCD::do_intersect_many(pairs, {}, {}, PCCD::Interpolation_search{.min_samples = 0}),
                           Contains("min_samples must be >= 1"));
         CHECK_THROWS_AS(PCCD::do_intersect_many(pairs, {.threads = 2}, {.contact_core = 2.0}), PCCD::Invalid_input);
+    }
+    SECTION("a visitor is refused: the batch runs its queries on several threads")
+    {
+        PCCD::Intersection_visitor visitor;
+        CHECK_THROWS_WITH(PCCD::do_intersect_many(pairs, {}, {.visitor = &visitor}), Contains("options.visitor is set"));
+        CHECK_THROWS_WITH(PCCD::intersection_points_many(pairs, {}, {.visitor = &visitor}), Contains("options.visitor"));
     }
     SECTION("an absurd thread count is refused, not passed on to TBB")
     {

@@ -27,7 +27,9 @@
 #include <PCCD/Surface/WLS_surface.h>
 #include <PCCD/Surface/estimate_normals.h>
 #include <PCCD/concepts/CollisionObject.h>
+#include <PCCD/concepts/PairObserver.h>
 #include <PCCD/concepts/PathSource.h>
+#include <PCCD/Hierarchy/reach_traversal.h>
 #include <PCCD/concepts/ProximityGraph.h>
 #include <PCCD/Geodesic/Close_pairs_shortest_paths.h>
 #include <PCCD/Geodesic/Paths_on_the_fly.h>
@@ -358,6 +360,16 @@ struct Caching_path_source { // path() is not const: not safe to call concurrent
     bool path(std::uint32_t, std::uint32_t, std::vector<std::uint32_t>&);
 };
 
+/// Exactly what PairObserver requires (non-const members, results ignored), counting the pairs.
+struct Pair_observer {
+    std::size_t nodes = 0, leaves = 0;
+    void node_pair(std::uint32_t, std::uint32_t) { ++nodes; }
+    void leaf_pair(std::uint32_t, std::uint32_t) { ++leaves; }
+};
+struct Node_only_observer { // no leaf_pair
+    void node_pair(std::uint32_t, std::uint32_t);
+};
+
 /// Exactly what SurfaceDistance requires, over a Euclidean_distance.
 class Distance {
 public:
@@ -519,6 +531,10 @@ static_assert(!PCCD::LeafIntersector<archetype::With_numeric_name, Arch, Arch>);
 static_assert(PCCD::PathSource<archetype::Path_source>);
 static_assert(PCCD::PathSource<PCCD::Stored_paths>);
 static_assert(!PCCD::PathSource<archetype::Silent_path_source>);
+static_assert(PCCD::PairObserver<archetype::Pair_observer>);
+static_assert(PCCD::PairObserver<PCCD::Ignore_pairs>);
+static_assert(!PCCD::PairObserver<archetype::Node_only_observer>);
+static_assert(!PCCD::PairObserver<int>);
 static_assert(!PCCD::PathSource<archetype::Path_length_source>);
 static_assert(!PCCD::PathSource<archetype::Caching_path_source>);
 // The interpolation search's role reads its paths through the PathSource archetype.
@@ -641,6 +657,25 @@ TEST_CASE("a point cloud object builds and collides with kernel and point-map ar
         CHECK(PCCD::do_intersect(kernel, identity, kernel, pose).counters.f_evaluations ==
               expected.counters.f_evaluations);
     }
+}
+
+TEST_CASE("the reach traversals tell a pair-observer archetype of every pair they count", "[concepts]")
+{
+    const auto sample = sample_shape(unit_sphere(), 2000, 0.0, 93);
+    const PCCD::Point_cloud_object<> a(columns(sample.points)); // a cloud with reaches
+    const PCCD::Point_cloud_hierarchy& h = a.hierarchy();
+    const PCCD::Rigid_transform_3<double> shift(Eigen::Matrix3d::Identity(), Eigen::Vector3d(1.5, 0.2, 0.0));
+    const PCCD::Reach_rule rule{};
+    archetype::Pair_observer walk, meet;
+    const PCCD::Reach_counters c = PCCD::for_each_leaf_pair_within_reach(
+        h, h, shift, rule, rule, [](std::uint32_t, std::uint32_t) { return true; }, true, false, walk);
+    CHECK(walk.nodes == c.node_pairs);
+    CHECK(walk.leaves == c.leaf_pairs);
+    CHECK(c.leaf_pairs > 0);
+    PCCD::Reach_counters counters;
+    CHECK(PCCD::reaches_meet(h, h, shift, rule, rule, counters, std::numeric_limits<std::size_t>::max(), meet));
+    CHECK(meet.nodes == counters.node_pairs);
+    CHECK(meet.leaves == counters.leaf_pairs);
 }
 
 TEST_CASE("stored and on-the-fly paths give the interpolation search the same curves", "[concepts]")

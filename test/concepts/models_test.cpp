@@ -5,6 +5,8 @@
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud.h>
 #include <PCCD/Point_cloud_object.h>
+#include <PCCD/Intersection/Intersection_visitor.h>
+#include <PCCD/concepts/PairObserver.h>
 #include <PCCD/concepts/PointCloudKernel.h>
 #include <PCCD/concepts/ProximityGraph.h>
 #include <PCCD/concepts/ReadablePointMap.h>
@@ -109,6 +111,12 @@ static_assert(PCCD::ProximityGraph<Csr_graph, Csr_weight_map>);
 static_assert(PCCD::ProximityGraph<List_graph, List_weight_map>);
 static_assert(!PCCD::ProximityGraph<List_graph_set, List_set_weight_map>, "listS vertices are not point indices");
 static_assert(!PCCD::ProximityGraph<List_graph, int>, "int is not a weight map");
+
+// PairObserver: the traversals' default, the visitor's forwarder, and a visitor itself (its pair members).
+static_assert(PCCD::PairObserver<PCCD::Ignore_pairs>);
+static_assert(PCCD::PairObserver<PCCD::internal::Visitor_pairs>);
+static_assert(PCCD::PairObserver<PCCD::Intersection_visitor>);
+static_assert(!PCCD::PairObserver<std::vector<int>>);
 
 TEST_CASE("a user point type works through a point map", "[concepts]")
 {

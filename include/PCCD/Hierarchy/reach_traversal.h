@@ -22,6 +22,7 @@
 #include <PCCD/Error.h>
 #include <PCCD/Hierarchy/Point_cloud_hierarchy.h>
 #include <PCCD/Rigid_transform_3.h>
+#include <PCCD/concepts/PairObserver.h>
 
 namespace PCCD {
 
@@ -235,13 +236,14 @@ inline std::pair<std::size_t, double> descend_to_near_point(const Point_cloud_hi
 /// nearer the other node's centre comes first (the pairs most likely to touch early: near child of
 /// s with near child of t, then near with far, far with near, far with far), otherwise the left
 /// child. Deterministic. `visit` returns false to stop
-/// the traversal. Returns the counters.
+/// the traversal. `observer` (a PairObserver) is told of every node pair tested and every leaf pair
+/// handed to `visit`. Returns the counters.
 /// Complexity: O(node pairs visited), each at most once; O(height) extra space.
-template <class Visitor>
+template <class Visitor, PairObserver Observer = Ignore_pairs>
 Reach_counters for_each_leaf_pair_within_reach(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t,
                                                const Rigid_transform_3<double>& s_to_t, const Reach_rule& rule_s,
                                                const Reach_rule& rule_t, Visitor&& visit, bool closest_first = false,
-                                               bool either = false)
+                                               bool either = false, Observer&& observer = Observer())
 {
     Reach_counters counters;
     if (s.empty() || t.empty()) return counters;
@@ -258,6 +260,7 @@ Reach_counters for_each_leaf_pair_within_reach(const Point_cloud_hierarchy& s, c
         const auto [i, j] = stack.back();
         stack.pop_back();
         ++counters.node_pairs;
+        observer.node_pair(i, j);
         const auto& ns = s.node(i);
         const auto& nt = t.node(j);
         internal::Mapped_node& mapped = mapped_nodes[i & 63];
@@ -276,6 +279,7 @@ Reach_counters for_each_leaf_pair_within_reach(const Point_cloud_hierarchy& s, c
             continue;
         if (ns.is_leaf() && nt.is_leaf()) {
             ++counters.leaf_pairs;
+            observer.leaf_pair(i, j);
             if (!visit(i, j)) {
                 counters.pending = stack.size();
                 return counters;
@@ -377,10 +381,11 @@ inline bool leaf_reaches_meet(const Point_cloud_hierarchy& s, Point_cloud_hierar
 /// within reach of both clouds. Exact; stops at the first such pair. `counters` accumulates the work.
 /// `max_leaf_pairs`: after comparing this many leaf pairs without finding one, answers true (they
 /// may meet; a conservative answer that bounds the work of deep overlaps, where the boxes of many
-/// leaf pairs overlap).
-inline bool reaches_meet(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t,
-                         const Rigid_transform_3<double>& s_to_t, const Reach_rule& rule_s, const Reach_rule& rule_t,
-                         Reach_counters& counters, std::size_t max_leaf_pairs = std::numeric_limits<std::size_t>::max())
+/// leaf pairs overlap). `observer`: as for for_each_leaf_pair_within_reach().
+template <PairObserver Observer = Ignore_pairs>
+bool reaches_meet(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t, const Rigid_transform_3<double>& s_to_t,
+                  const Reach_rule& rule_s, const Reach_rule& rule_t, Reach_counters& counters,
+                  std::size_t max_leaf_pairs = std::numeric_limits<std::size_t>::max(), Observer&& observer = Observer())
 {
     bool met = false;
     std::size_t compared = 0;
@@ -388,7 +393,8 @@ inline bool reaches_meet(const Point_cloud_hierarchy& s, const Point_cloud_hiera
         s, t, s_to_t, rule_s, rule_t, [&](Point_cloud_hierarchy::Index i, Point_cloud_hierarchy::Index j) {
             met = ++compared > max_leaf_pairs || leaf_reaches_meet(s, i, t, j, s_to_t, rule_s, rule_t);
             return !met;
-        });
+        },
+        false, false, observer);
     counters.node_pairs += c.node_pairs;
     counters.leaf_pairs += c.leaf_pairs;
     return met;

@@ -13,6 +13,8 @@
 
 namespace PCCD {
 
+struct Intersection_visitor; // Intersection_visitor.h
+
 /// Where a query looks for the intersection.
 enum class Overlap_region : std::uint8_t {
     /// Pairs of hierarchy leaves whose boxes may overlap (the default): the work follows the contact
@@ -91,6 +93,10 @@ struct Intersection_options {
     /// the answer then depends on the machine's speed. Unset (default): no limit. When set: finite
     /// and > 0.
     std::optional<double> max_time_us = std::nullopt;
+    /// Events of the query (node pairs, leaf pairs, brackets, evaluations of f) reported to this
+    /// visitor (Intersection_visitor.h), which must outlive the query; the visitor's members run on
+    /// the query's thread. Default nullptr: no events. Not owned.
+    Intersection_visitor* visitor = nullptr;
     /// Sample both roles (points of A tested against f_B, then points of B against f_A). Default
     /// true; false samples only the object with fewer candidate points.
     bool symmetric = true;

@@ -45,7 +45,7 @@ bool surfaces_may_touch(const Posed_object<A>& pa, const Posed_object<B>& pb, co
     const bool meet = reaches_meet(ha, hb, pb.from_world * pa.to_world,
                                    Reach_rule{.scale = options.contact_core, .cap = pa.support_radius()},
                                    Reach_rule{.scale = options.contact_core, .cap = pb.support_radius()}, c,
-                                   0);
+                                   0, Visitor_pairs{options.visitor, false});
     counters.node_pairs += c.node_pairs;
     counters.leaf_pairs += c.leaf_pairs;
     return meet;
@@ -76,6 +76,8 @@ Intersection_result run_query(const A& a, const Rigid_transform_3<double>& pose_
     }
     Query_state state(options.seed, options.max_f_evaluations, first_hit, spacing, result.points);
     state.counters = result.counters;
+    state.visitor = options.visitor;
+    state.posed_a = &pa;
     if (options.max_time_us)
         state.deadline = start + std::chrono::nanoseconds(std::int64_t(*options.max_time_us * 1e3));
     if (options.verify_contacts) {

@@ -72,6 +72,9 @@ std::vector<Intersection_result> run_many(std::span<const Posed_pair<A, B>> pair
 {
     // Everything that does not depend on the pair is checked once, before any work.
     check_options(options, function);
+    if (options.visitor)
+        throw Invalid_input(concat(function, ": options.visitor is set; the batch runs its queries on several threads at "
+                                             "once, so a visitor is taken by the single queries only"));
     policy.check();
     if (batch.threads && *batch.threads > Batch_options::max_threads)
         throw Invalid_input(concat(function, ": threads ", *batch.threads, " exceeds the limit ", Batch_options::max_threads,
@@ -116,7 +119,8 @@ std::vector<Intersection_result> run_many(std::span<const Posed_pair<A, B>> pair
 /// \tparam A, B models of CollisionObject (Point_cloud_object<K>).
 /// \tparam Policy a model of LeafIntersector for A and B: Interpolation_search (default) or
 ///         Randomized_sampling.
-/// \throws Invalid_input for invalid options or policy parameters, more than
+/// \throws Invalid_input for invalid options or policy parameters, options.visitor set (the
+///         queries run on several threads), more than
 ///         Batch_options::max_threads threads, or a pair with a null object (naming its index),
 ///         before any query runs; an exception thrown by the query of a pair is
 ///         rethrown after the other pairs are done (the one of the lowest index if several threw).

@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 
 #include <PCCD/Intersection/Intersection_result.h>
+#include <PCCD/Intersection/Intersection_visitor.h>
 #include <PCCD/Random.h>
 #include <PCCD/Rigid_transform_3.h>
 #include <PCCD/Surface/WLS_surface.h>
@@ -129,6 +130,10 @@ struct Query_state {
     Point_sink sink;
     /// Empty: candidates are kept as they are (unverified).
     Verifier verifier;
+    /// Told of the query's events (null: none).
+    Intersection_visitor* visitor = nullptr;
+    /// The posed object A of the query (to tell an evaluation of f_A from one of f_B).
+    const void* posed_a = nullptr;
 
     Query_state(std::uint64_t seed, std::optional<std::size_t> max_f, bool first_hit, double spacing,
                 std::vector<Intersection_point>& out)
@@ -159,19 +164,24 @@ struct Query_state {
         return sink.add(*contact);
     }
 
-    /// f of `target` at the world point x, counted.
+    /// f of `target` at the world point x, counted (and reported to the visitor).
     template <class Object>
     Surface_evaluation evaluate_world(const Posed_object<Object>& target, const Eigen::Vector3d& x)
     {
         ++counters.f_evaluations;
-        return target.object->surface().evaluate(target.from_world.transform_point(x));
+        const Surface_evaluation e = target.object->surface().evaluate(target.from_world.transform_point(x));
+        if (visitor) visitor->evaluation(&target == posed_a ? Query_object::a : Query_object::b, x, e);
+        return e;
     }
-    /// f of `target` at the point x of its own frame, counted.
+    /// f of `target` at the point x of its own frame, counted (and reported to the visitor).
     template <class Object>
     Surface_evaluation evaluate_local(const Posed_object<Object>& target, const Eigen::Vector3d& x)
     {
         ++counters.f_evaluations;
-        return target.object->surface().evaluate(x);
+        const Surface_evaluation e = target.object->surface().evaluate(x);
+        if (visitor)
+            visitor->evaluation(&target == posed_a ? Query_object::a : Query_object::b, target.to_world.transform_point(x), e);
+        return e;
     }
 };
 

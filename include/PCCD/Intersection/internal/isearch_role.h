@@ -203,6 +203,8 @@ struct Isearch_role {
             }
             if ((di < 0.0) == (ej.value < 0.0)) continue;
             ++state.counters.brackets_found;
+            if (state.visitor)
+                state.visitor->bracket(pi_world, sampled.to_world.transform_point(sampled.position(j)));
             if (!path_source.path(i, j, path)) break; // no path within the bound (on the fly)
             if (auto found = search_path(sampled, tested, s_to_t, path, di, ej.value, epsilon, state))
                 state.offer(*found);
