@@ -1,13 +1,13 @@
 // PCCD/Hierarchy/Point_cloud_hierarchy.h -- a static bounding-volume hierarchy over the points of a
 // cloud (doc/algorithms.md "Point cloud hierarchy"): axis-aligned boxes built top-down by median
 // splits of the longest side, leaves of a few points, logarithmic height; each node's points are
-// also bounded by a slab normal to their direction of least spread, thin on a surface patch. Each point may carry a
-// reach (how far from it its surface can be defined, doc/manual/hierarchy.md) and each node the
-// largest reach of its points; the points and reaches are also stored in hierarchy order, so that
-// a leaf's data is contiguous. The intersection queries use it to restrict their work to the parts
-// of two objects that can touch (overlapping_leaves.h, reach_traversal.h). A built tree can be
-// refitted over new positions of the same points (the hierarchy of a deforming cloud,
-// doc/manual/kinetic.md "Deforming point clouds").
+// also bounded by a slab normal to their direction of least spread, thin on a surface patch. Each
+// point may carry a reach (how far from it its surface can be defined, doc/manual/hierarchy.md) and
+// each node the largest reach of its points; the points and reaches are also stored in hierarchy
+// order, so that a leaf's data is contiguous. The intersection queries use it to restrict their
+// work to the parts of two objects that can touch (overlapping_leaves.h, reach_traversal.h). A
+// built tree can be refitted over new positions of the same points (the hierarchy of a deforming
+// cloud, doc/manual/kinetic.md "Deforming point clouds").
 #pragma once
 
 #include <algorithm>

@@ -235,9 +235,8 @@ inline std::pair<std::size_t, double> descend_to_near_point(const Point_cloud_hi
 /// by the other node's two children; with `closest_first` each node's child whose box centre lies
 /// nearer the other node's centre comes first (the pairs most likely to touch early: near child of
 /// s with near child of t, then near with far, far with near, far with far), otherwise the left
-/// child. Deterministic. `visit` returns false to stop
-/// the traversal. `observer` (a PairObserver) is told of every node pair tested and every leaf pair
-/// handed to `visit`. Returns the counters.
+/// child. Deterministic. `visit` returns false to stop the traversal. `observer` (a PairObserver)
+/// is told of every node pair tested and every leaf pair handed to `visit`. Returns the counters.
 /// Complexity: O(node pairs visited), each at most once; O(height) extra space.
 template <class Visitor, PairObserver Observer = Ignore_pairs>
 Reach_counters for_each_leaf_pair_within_reach(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t,
