@@ -159,6 +159,20 @@ TEST_CASE("Slabs prune node pairs of tilted patches whose boxes overlap, and kee
         CHECK((within > 0) == c.meet);
         PCCD::Reach_counters counters;
         CHECK(PCCD::reaches_meet(s, t, c.s_to_t, rule, rule, counters) == c.meet);
+        // A tree with slabs against one without (a refitted tree, as a deforming object has): the
+        // slab side still prunes, the other contributes its boxes; no leaf pair within reach is lost.
+        for (const bool slabs_on_s : {true, false}) {
+            const PCCD::Point_cloud_hierarchy& ms = slabs_on_s ? s : s_boxes;
+            const PCCD::Point_cloud_hierarchy& mt = slabs_on_s ? t_boxes : t;
+            std::set<std::pair<Index, Index>> mixed;
+            PCCD::for_each_leaf_pair_within_reach(ms, mt, c.s_to_t, rule, rule, [&](Index i, Index j) {
+                mixed.emplace(i, j);
+                return true;
+            });
+            for (const auto& [i, j] : boxes_only)
+                if (PCCD::leaf_pair_gap(s, i, t, j, c.s_to_t, rule, rule) <= 0.0) CHECK(mixed.count({i, j}) == 1);
+            CHECK(PCCD::reaches_meet(ms, mt, c.s_to_t, rule, rule, counters) == c.meet);
+        }
     }
 }
 

@@ -71,13 +71,17 @@ inline bool grown_boxes_may_overlap(const Eigen::AlignedBox3d& a, const Eigen::M
     return true;
 }
 
-/// An interval holding m . p for the points p of `node` (its local frame; the node has a slab):
+/// An interval holding m . p for the points p of `node` (its local frame; without a slab, the box's projection):
 /// with m = a n + w, w normal to the slab's normal n, a n . p lies in the slab's interval scaled by
 /// a and w . p in the box's projection onto w. For m along n it is the slab's own interval, however
 /// thick the box; for m normal to n, the box's projection.
 inline std::pair<double, double> node_extent_along(const Point_cloud_hierarchy::Node& node, const Eigen::Vector3d& m)
 {
     const Eigen::Vector3d c = node.box.center(), h = 0.5 * (node.box.max() - node.box.min());
+    if (!std::isfinite(node.slab_min)) { // no slab (a refitted tree): the box's projection
+        const double mc = m.dot(c), mh = m.cwiseAbs().dot(h);
+        return {mc - mh, mc + mh};
+    }
     const double a = m.dot(node.slab_normal);
     const Eigen::Vector3d w = m - a * node.slab_normal;
     const double wc = w.dot(c), wh = w.cwiseAbs().dot(h);
