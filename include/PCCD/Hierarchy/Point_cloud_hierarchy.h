@@ -69,6 +69,8 @@ public:
         double slab_max = std::numeric_limits<double>::infinity();
 
         bool is_leaf() const { return right == no_child; }
+        /// False for a node of a refitted tree (no slab).
+        bool has_slab() const { return std::isfinite(slab_min); }
     };
 
     /// An empty hierarchy.

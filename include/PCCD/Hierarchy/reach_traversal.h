@@ -78,7 +78,7 @@ inline bool grown_boxes_may_overlap(const Eigen::AlignedBox3d& a, const Eigen::M
 inline std::pair<double, double> node_extent_along(const Point_cloud_hierarchy::Node& node, const Eigen::Vector3d& m)
 {
     const Eigen::Vector3d c = node.box.center(), h = 0.5 * (node.box.max() - node.box.min());
-    if (!std::isfinite(node.slab_min)) { // no slab (a refitted tree): the box's projection
+    if (!node.has_slab()) { // no slab (a refitted tree): the box's projection
         const double mc = m.dot(c), mh = m.cwiseAbs().dot(h);
         return {mc - mh, mc + mh};
     }
@@ -105,12 +105,12 @@ struct Mapped_node {
 inline bool slabs_may_overlap(const Point_cloud_hierarchy::Node& ns, const Mapped_node& mapped, const Eigen::Matrix3d& r,
                               const Eigen::Vector3d& shift, const Point_cloud_hierarchy::Node& nt, double margin)
 {
-    if (std::isfinite(ns.slab_min)) {
+    if (ns.has_slab()) {
         // s's slab in t's frame: normal r n_s, interval shifted by (r n_s) . shift.
         const auto [lo, hi] = node_extent_along(nt, mapped.slab_normal);
         if (lo > ns.slab_max + mapped.slab_shift + margin || hi < ns.slab_min + mapped.slab_shift - margin) return false;
     }
-    if (std::isfinite(nt.slab_min)) {
+    if (nt.has_slab()) {
         // t's slab normal n_t seen from s: n_t . (r p + shift) = (r^T n_t) . p + n_t . shift.
         const Eigen::Vector3d u = r.transpose() * nt.slab_normal;
         const double offset = nt.slab_normal.dot(shift);

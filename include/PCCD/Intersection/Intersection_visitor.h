@@ -48,19 +48,18 @@ struct Intersection_visitor {
 
 namespace internal {
 
-/// The pair events of a traversal of s and t forwarded to a visitor (none when null), with s and t
-/// swapped back into A and B when s is B. A model of the traversals' pair observer.
+/// The pair events of a traversal of A's hierarchy (s) and B's (t) forwarded to a visitor (none
+/// when null). A model of the traversals' pair observer.
 struct Visitor_pairs {
     Intersection_visitor* visitor = nullptr;
-    bool s_is_b = false;
 
-    void node_pair(std::uint32_t s, std::uint32_t t) const
+    void node_pair(std::uint32_t a, std::uint32_t b) const
     {
-        if (visitor) s_is_b ? visitor->node_pair(t, s) : visitor->node_pair(s, t);
+        if (visitor) visitor->node_pair(a, b);
     }
-    void leaf_pair(std::uint32_t s, std::uint32_t t) const
+    void leaf_pair(std::uint32_t a, std::uint32_t b) const
     {
-        if (visitor) s_is_b ? visitor->leaf_pair(t, s) : visitor->leaf_pair(s, t);
+        if (visitor) visitor->leaf_pair(a, b);
     }
 };
 

@@ -45,7 +45,7 @@ bool surfaces_may_touch(const Posed_object<A>& pa, const Posed_object<B>& pb, co
     const bool meet = reaches_meet(ha, hb, pb.from_world * pa.to_world,
                                    Reach_rule{.scale = options.contact_core, .cap = pa.support_radius()},
                                    Reach_rule{.scale = options.contact_core, .cap = pb.support_radius()}, c,
-                                   0, Visitor_pairs{options.visitor, false});
+                                   0, Visitor_pairs{options.visitor});
     counters.node_pairs += c.node_pairs;
     counters.leaf_pairs += c.leaf_pairs;
     return meet;

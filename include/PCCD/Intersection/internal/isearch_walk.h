@@ -195,7 +195,7 @@ void walk_first_hit(const Policy& policy, const Posed_object<A>& a, const Posed_
                         return false;
                     return active();
                 },
-                options.traversal == Traversal::likelihood, true, Visitor_pairs{state.visitor, false});
+                options.traversal == Traversal::likelihood, true, Visitor_pairs{state.visitor});
             state.counters.node_pairs += c.node_pairs;
             state.counters.leaf_pairs += c.leaf_pairs;
             state.counters.pending_node_pairs += c.pending;
