@@ -10,7 +10,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
-#include <unordered_set>
 
 #include <Eigen/Core>
 
@@ -18,6 +17,7 @@
 #include <PCCD/Hierarchy/reach_traversal.h>
 #include <PCCD/Intersection/Intersection_options.h>
 #include <PCCD/Intersection/internal/Covering_grid.h>
+#include <PCCD/Intersection/internal/Position_set.h>
 #include <PCCD/Intersection/internal/Query_state.h>
 #include <PCCD/Intersection/internal/isearch_role.h>
 #include <PCCD/Random.h>
@@ -33,7 +33,7 @@ namespace PCCD::internal {
 /// covered already. Returns false when the query must stop.
 template <class Role_type>
 inline bool probe(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t, const Reach_rule& rule_t,
-                  std::size_t cap, std::unordered_set<std::uint32_t>& done, Covering_grid& cover, Role_type& role,
+                  std::size_t cap, Position_set& done, Covering_grid& cover, Role_type& role,
                   std::size_t steps)
 {
     if (role.taken >= cap || s.empty()) return true;
@@ -44,11 +44,10 @@ inline bool probe(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t
         const auto [m, squared] = descend_to_near_point(t, role.s_to_t.transform_point(local));
         const double reach = rule_t(t.ordered_points()(3, Eigen::Index(m)));
         if (squared <= reach * reach) {
-            const std::uint32_t index = s.order()[k];
-            if (cover.covers(local) || !done.insert(index).second) return true;
+            if (cover.covers(local) || !done.insert(std::uint32_t(k))) return true;
             cover.add(local);
             ++role.state.counters.candidate_points;
-            return role.sample(index) && !role.state.stop();
+            return role.sample(s.order()[k]) && !role.state.stop();
         }
         if (step >= steps) return true;
         const Eigen::Vector3d back = t_to_s.transform_point(t.ordered_points().col(Eigen::Index(m)).head<3>());
@@ -63,7 +62,7 @@ inline bool probe(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t
 template <class Role_type>
 bool sample_leaf(const Point_cloud_hierarchy& s, Point_cloud_hierarchy::Index ls, const Point_cloud_hierarchy& t,
                  Point_cloud_hierarchy::Index lt, const Reach_rule& rule_t, std::size_t cap,
-                 std::unordered_set<std::uint32_t>& done, Covering_grid& cover, Role_type& role)
+                 Position_set& done, Covering_grid& cover, Role_type& role)
 {
     const auto& ns = s.node(ls);
     const auto& nt = t.node(lt);
@@ -77,7 +76,7 @@ bool sample_leaf(const Point_cloud_hierarchy& s, Point_cloud_hierarchy::Index ls
             const double reach = rule_t(pt(3, m));
             inside = (pt.col(m).head<3>() - q).squaredNorm() <= reach * reach;
         }
-        if (!inside || !done.insert(s.order()[k]).second) continue;
+        if (!inside || !done.insert(k)) continue;
         ++role.state.counters.candidate_points;
         const Eigen::Vector3d local = ps.col(k).head<3>();
         if (cover.covers(local)) continue;
@@ -92,13 +91,13 @@ bool sample_leaf(const Point_cloud_hierarchy& s, Point_cloud_hierarchy::Index ls
 /// to `cap` samples. Returns false when the query must stop.
 template <class Role_type>
 bool sample_marked(const Point_cloud_hierarchy& s, Point_cloud_hierarchy::Index ls, std::uint64_t inside,
-                   std::size_t cap, std::unordered_set<std::uint32_t>& done, Covering_grid& cover, Role_type& role)
+                   std::size_t cap, Position_set& done, Covering_grid& cover, Role_type& role)
 {
     const auto& ns = s.node(ls);
     for (; inside != 0; inside &= inside - 1) {
         if (role.taken >= cap) return true;
         const auto k = ns.first + Point_cloud_hierarchy::Index(std::countr_zero(inside));
-        if (!done.insert(s.order()[k]).second) continue;
+        if (!done.insert(k)) continue;
         ++role.state.counters.candidate_points;
         const Eigen::Vector3d local = s.ordered_points().col(k).head<3>();
         if (cover.covers(local)) continue;
@@ -115,8 +114,8 @@ bool sample_marked(const Point_cloud_hierarchy& s, Point_cloud_hierarchy::Index 
 template <class Role_a, class Role_b>
 bool sample_leaf_pair(const Point_cloud_hierarchy& ha, Point_cloud_hierarchy::Index la, const Point_cloud_hierarchy& hb,
                       Point_cloud_hierarchy::Index lb, const Reach_rule& rule_a, const Reach_rule& rule_b,
-                      std::size_t cap, bool use_a, bool use_b, std::unordered_set<std::uint32_t>& done_a,
-                      Covering_grid& cover_a, Role_a& role_a, std::unordered_set<std::uint32_t>& done_b,
+                      std::size_t cap, bool use_a, bool use_b, Position_set& done_a,
+                      Covering_grid& cover_a, Role_a& role_a, Position_set& done_b,
                       Covering_grid& cover_b, Role_b& role_b)
 {
     using Index = Point_cloud_hierarchy::Index;
@@ -127,26 +126,36 @@ bool sample_leaf_pair(const Point_cloud_hierarchy& ha, Point_cloud_hierarchy::In
         if (use_a && !sample_leaf(ha, la, hb, lb, rule_b, cap, done_a, cover_a, role_a)) return false;
         return !use_b || sample_leaf(hb, lb, ha, la, rule_a, cap, done_b, cover_b, role_b);
     }
+    // The points each role still has to consider; a pair whose points are all done is skipped.
+    const auto all = [](Index count) { return count == most ? ~std::uint64_t(0) : (std::uint64_t(1) << count) - 1; };
+    const std::uint64_t need_a = use_a && role_a.taken < cap ? all(na.count) & ~done_a.mask(na.first, na.count) : 0;
+    const std::uint64_t need_b = use_b && role_b.taken < cap ? all(nb.count) & ~done_b.mask(nb.first, nb.count) : 0;
+    if (need_a == 0 && need_b == 0) return true;
     const Eigen::Matrix4Xd& pa = ha.ordered_points();
     const Eigen::Matrix4Xd& pb = hb.ordered_points();
-    Eigen::Vector3d mapped[most]; // la's points in b's frame
-    double reach_a[most], reach_b[most];
-    for (Index k = 0; k < na.count; ++k) {
-        mapped[k] = role_a.s_to_t.transform_point(Eigen::Vector3d(pa.col(na.first + k).head<3>()));
-        reach_a[k] = rule_a(pa(3, na.first + k));
-        reach_a[k] *= reach_a[k];
-    }
+    double reach_b[most];
     for (Index m = 0; m < nb.count; ++m) {
         reach_b[m] = rule_b(pb(3, nb.first + m));
         reach_b[m] *= reach_b[m];
     }
+    // Point k of la against the points of lb: all of them when k is needed, else only the needed
+    // points of lb not yet found inside. Each distance serves both roles.
     std::uint64_t inside_a = 0, inside_b = 0; // bit k: point k of the leaf is within the other's reach
-    for (Index k = 0; k < na.count; ++k)
-        for (Index m = 0; m < nb.count; ++m) {
-            const double squared = (pb.col(nb.first + m).head<3>() - mapped[k]).squaredNorm();
-            if (squared <= reach_b[m]) inside_a |= std::uint64_t(1) << k;
-            if (squared <= reach_a[k]) inside_b |= std::uint64_t(1) << m;
+    for (Index k = 0; k < na.count; ++k) {
+        const bool want = (need_a >> k) & 1;
+        std::uint64_t row = want ? all(nb.count) : need_b & ~inside_b;
+        if (row == 0) continue;
+        const Eigen::Vector3d mapped = role_a.s_to_t.transform_point(Eigen::Vector3d(pa.col(na.first + k).head<3>()));
+        double reach_k = rule_a(pa(3, na.first + k));
+        reach_k *= reach_k;
+        for (; row != 0; row &= row - 1) {
+            const auto m = Index(std::countr_zero(row));
+            const double squared = (pb.col(nb.first + m).head<3>() - mapped).squaredNorm();
+            if (squared <= reach_b[m]) inside_a |= std::uint64_t(want) << k;
+            if (squared <= reach_k) inside_b |= std::uint64_t(1) << m;
         }
+    }
+    inside_b &= need_b;
     if (use_a && !sample_marked(ha, la, inside_a, cap, done_a, cover_a, role_a)) return false;
     return !use_b || sample_marked(hb, lb, inside_b, cap, done_b, cover_b, role_b);
 }
@@ -174,7 +183,7 @@ void walk_first_hit(const Policy& policy, const Posed_object<A>& a, const Posed_
         with_path_source(policy, b, [&](const auto& source_b) {
             Isearch_role<Policy, A, B, std::remove_cvref_t<decltype(source_a)>> role_a{policy, a, b, source_a, state, epsilon};
             Isearch_role<Policy, B, A, std::remove_cvref_t<decltype(source_b)>> role_b{policy, b, a, source_b, state, epsilon};
-            std::unordered_set<std::uint32_t> done_a, done_b;
+            Position_set done_a, done_b;
             Covering_grid cover_a(std::max(policy.walk_cover * role_a.rho, tiny));
             Covering_grid cover_b(std::max(policy.walk_cover * role_b.rho, tiny));
             const auto active = [&] { return (use_a && role_a.taken < cap) || (use_b && role_b.taken < cap); };

@@ -1,0 +1,88 @@
+// PCCD/Intersection/internal/Position_set.h -- the points a role of a walked first-hit query has
+// already considered (doc/manual/hierarchy.md, "Covering instead of random draws"), as positions in
+// hierarchy order: one 64-bit mask per block of 64 consecutive positions, the blocks in an
+// open-addressing table. A leaf's points are consecutive, so the walk reads which of them are done
+// with one or two look-ups and skips a leaf pair whose points are all done in both roles. Internal to
+// Interpolation_search.h.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace PCCD::internal {
+
+/// A set of positions (std::uint32_t), with the masks of runs of at most 64 positions.
+class Position_set {
+public:
+    /// Adds `k`; true if it was not in the set.
+    bool insert(std::uint32_t k)
+    {
+        std::uint64_t& mask = block(k >> 6);
+        const std::uint64_t bit = std::uint64_t(1) << (k & 63);
+        if (mask & bit) return false;
+        mask |= bit;
+        return true;
+    }
+
+    /// Bit i set: position first + i is in the set, for i < count. \pre count <= 64.
+    std::uint64_t mask(std::uint32_t first, std::uint32_t count) const
+    {
+        if (count == 0 || m_used == 0) return 0;
+        const std::uint32_t shift = first & 63;
+        std::uint64_t bits = find(first >> 6) >> shift;
+        if (shift != 0 && shift + count > 64) bits |= find((first >> 6) + 1) << (64 - shift);
+        return count == 64 ? bits : bits & ((std::uint64_t(1) << count) - 1);
+    }
+
+private:
+    struct Slot {
+        std::uint32_t key = empty;
+        std::uint64_t mask = 0;
+    };
+    static constexpr std::uint32_t empty = 0xffffffffu; // no block index reaches it (positions < 2^32)
+
+    static std::size_t hash(std::uint32_t key) { return std::size_t((std::uint64_t(key) * 0x9e3779b97f4a7c15ull) >> 40); }
+
+    std::uint64_t find(std::uint32_t key) const
+    {
+        if (m_slots.empty()) return 0;
+        const std::size_t wrap = m_slots.size() - 1;
+        for (std::size_t i = hash(key) & wrap;; i = (i + 1) & wrap) {
+            if (m_slots[i].key == key) return m_slots[i].mask;
+            if (m_slots[i].key == empty) return 0;
+        }
+    }
+
+    std::uint64_t& block(std::uint32_t key)
+    {
+        if (2 * (m_used + 1) > m_slots.size()) grow();
+        const std::size_t wrap = m_slots.size() - 1;
+        for (std::size_t i = hash(key) & wrap;; i = (i + 1) & wrap) {
+            if (m_slots[i].key == key) return m_slots[i].mask;
+            if (m_slots[i].key == empty) {
+                ++m_used;
+                m_slots[i].key = key;
+                return m_slots[i].mask;
+            }
+        }
+    }
+
+    void grow()
+    {
+        std::vector<Slot> old = std::move(m_slots);
+        m_slots.assign(old.empty() ? 16 : 2 * old.size(), Slot{});
+        const std::size_t wrap = m_slots.size() - 1;
+        for (const Slot& s : old) {
+            if (s.key == empty) continue;
+            std::size_t i = hash(s.key) & wrap;
+            while (m_slots[i].key != empty) i = (i + 1) & wrap;
+            m_slots[i] = s;
+        }
+    }
+
+    std::vector<Slot> m_slots;
+    std::size_t m_used = 0;
+};
+
+} // namespace PCCD::internal
