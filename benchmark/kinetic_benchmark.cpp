@@ -8,6 +8,7 @@
 //
 //   kinetic_benchmark [--sizes 1684,6891,15503] [--rates 30,60,120] [--repeats 5] [--csv FILE]
 //                     [--rays 64] [--warm-up 0] [--methods kinetic+rays,bottom_up+rays,...]
+//                     [--boxes 0.25,0.5,1]
 //
 // --warm-up S plays the first S seconds untimed and measures the rest (2: the settled cloth).
 // --methods runs only the listed methods (names as in the CSV); default all.
@@ -22,7 +23,12 @@
 // Kinetic_run_options::given_positions). The overlap of the cloth lying on the table
 // visits nearly the whole tree, the kinetic tree's worst case (it assembles node boxes lazily at
 // query time); a ray touches only the nodes along its path. For "+rays" rows, queries counts rays
-// (rays per frame x frames); --rays 0 leaves these rows out.
+// (rays per frame x frames); --rays 0 leaves these rows out. --boxes adds, at every rate, the kinetic
+// tree and bottom-up refit answering a range query with a box over part of the table's edge
+// instead of the table overlap ("+box<f>" methods): the box spans f times the table's half width on
+// either side of the middle of its +x edge, from 0.3 below to 0.1 above the top, so the answer is a
+// smaller part of the cloth than the table overlap's (f = 0.25: about 4 %, 1: about a third at
+// 6,890 triangles); the query's footprint is what decides between the trees.
 #include <scenes/Cloth_scene.h>
 #include <scenes/run_kinetic_scene.h>
 
@@ -36,6 +42,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -52,6 +59,18 @@ std::vector<double> parse_list(const std::string& text)
 
 using pccd_bench::median;
 
+/// The box of a "+box<f>" method (see the header comment); none for f <= 0.
+std::optional<Eigen::AlignedBox3d> box_over_table_edge(const PCCD::Kinetic_scene<PCCD::Kinetic_triangle>& scene,
+                                                       double f)
+{
+    if (!(f > 0.0)) return std::nullopt;
+    Eigen::AlignedBox3d table;
+    for (const auto& plan : scene.obstacle_flightplans) table.extend(plan.position(scene.start_time));
+    const double h = f * 0.5 * table.sizes().x();
+    const Eigen::Vector3d edge(table.max().x(), table.center().y(), table.max().z());
+    return Eigen::AlignedBox3d(edge - Eigen::Vector3d(h, h, 0.3), edge + Eigen::Vector3d(h, h, 0.1));
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -61,6 +80,7 @@ int main(int argc, char** argv)
     std::size_t rays = 64;
     double warm_up = 0.0;
     std::vector<std::string> only;
+    std::vector<double> boxes;
     std::string csv_file = "kinetic_benchmark.csv";
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string key = argv[i], value = argv[i + 1];
@@ -77,6 +97,8 @@ int main(int argc, char** argv)
             for (std::string item; std::getline(in, item, ',');) only.push_back(item);
         } else if (key == "--warm-up")
             warm_up = std::stod(value);
+        else if (key == "--boxes")
+            boxes = parse_list(value);
         else if (key == "--rays")
             rays = std::size_t(std::stoul(value));
         else {
@@ -103,6 +125,7 @@ int main(int argc, char** argv)
             bool self;
             bool rays;
             bool given = false;
+            double box = 0.0; // > 0: a range query with the box of that fraction instead of the overlap
         };
         for (const double rate : rates) {
             std::vector<Variant> variants{{"kinetic", PCCD::Kinetic_method::kinetic, false, false, false},
@@ -120,6 +143,12 @@ int main(int argc, char** argv)
                 variants.push_back({PCCD::to_string(m) + "+given", m, false, false, false, true});
                 if (rays > 0) variants.push_back({PCCD::to_string(m) + "+rays+given", m, false, false, true, true});
             }
+            for (const double f : boxes)
+                for (const auto m : {PCCD::Kinetic_method::kinetic, PCCD::Kinetic_method::bottom_up}) {
+                    std::ostringstream name;
+                    name << PCCD::to_string(m) << "+box" << f;
+                    variants.push_back({name.str(), m, false, false, false, false, f});
+                }
             for (const Variant& v : variants) {
                 if (!only.empty() && std::find(only.begin(), only.end(), v.name) == only.end()) continue;
                 const PCCD::Kinetic_run_options options{.query_hz = rate,
@@ -127,6 +156,7 @@ int main(int argc, char** argv)
                                                         .self_overlap_query = v.self,
                                                         .rays_per_frame = v.rays ? rays : 0,
                                                         .given_positions = v.given,
+                                                        .query_box = box_over_table_edge(scene, v.box),
                                                         .warm_up = warm_up};
                 std::vector<double> times, updates, queries, cpu_times, cpu_updates, cpu_queries;
                 PCCD::Kinetic_run_result first;

@@ -5,13 +5,15 @@
 # processor time per frame (update + the table overlap query) vs query rate (wall-clock time is in
 # column 15). Third: the same with ray casts ("+rays" rows) instead of the overlap query. Right:
 # time per frame kinetic / refit, overlap and rays, flightplans evaluated or the frame's positions
-# given ("+given" rows), with the 0.8 target.
+# given ("+given" rows), with the 0.8 target. Fifth (when the CSV has "+box<f>" rows): kinetic /
+# refit for range queries with boxes over the table's edge, whose answers are a small part of the
+# cloth: the query's footprint decides who wins.
 if (!exists("csv")) csv = 'kinetic_benchmark.csv'
 if (!exists("out")) out = 'kinetic_cloth.png'
-set terminal pngcairo size 2800,600 font ",11"
+set terminal pngcairo size 3500,600 font ",11"
 set output out
 set datafile separator ","
-set multiplot layout 1,4 title "Kinetic AABB tree vs bottom-up refit vs rebuild: cloth falling on a table (4 s)"
+set multiplot layout 1,5 title "Kinetic AABB tree vs bottom-up refit vs rebuild: cloth falling on a table (4 s)"
 
 rows(method, hz) = sprintf("< awk -F, '$8==\"%s\" && $5==%d {print $2\",\"$9\",\"$19}' %s", method, hz, csv)
 set logscale y
@@ -62,4 +64,13 @@ plot for [i=1:n] ratio("kinetic", "bottom_up", word(sizes, i)+0) using 1:2 with 
      for [i=1:n] ratio("kinetic+rays+given", "bottom_up+rays+given", word(sizes, i)+0) using 1:2 with linespoints lw 1 pt 4 dt 3 lc i \
          title sprintf("64 rays, positions given, %s tris", word(sizes, i)), \
      0.8 with lines lw 2 lc rgb "black" dt 4 title "target 0.8"
+
+fracs = system(sprintf("awk -F, 'NR>1 && $8 ~ /^kinetic[+]box/ && !seen[$8]++ {print substr($8, 12)}' %s", csv))
+m = words(fracs)
+if (m > 0) {
+    set ylabel "kinetic / bottom-up refit, box query over the table's edge"
+    plot for [i=1:n] for [j=1:m] ratio("kinetic+box".word(fracs, j), "bottom_up+box".word(fracs, j), word(sizes, i)+0) \
+             using 1:2 with linespoints lw 2 pt 7 lc i dt j title sprintf("box %s, %s tris", word(fracs, j), word(sizes, i)), \
+         0.8 with lines lw 2 lc rgb "black" dt 4 title "target 0.8"
+}
 unset multiplot

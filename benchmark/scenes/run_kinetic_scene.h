@@ -65,6 +65,11 @@ struct Kinetic_run_options {
     /// state a simulation already holds, and handed to both trees with advance_to(t, positions)
     /// (the refit copies them and refits; the kinetic tree reads them in its queries).
     bool given_positions = false;
+    /// If set, the overlap query is a range query with this box (the primitives whose boxes overlap
+    /// it) instead of the overlap with the obstacle: a query that touches only part of the scene,
+    /// for the regime study of doc/benchmarks.md (a box over part of the table's edge). Unset by
+    /// default.
+    std::optional<Eigen::AlignedBox3d> query_box = std::nullopt;
     /// Seconds of animation played before the measured frames (the trees advance to
     /// start_time + warm_up untimed, answering no query, and the counters start there); default
     /// 0. A warm-up of 2 s measures the settled cloth, whose events are few.
@@ -128,7 +133,10 @@ void answer_queries(const Tree& tree, const Obstacle& obstacle, bool has_obstacl
                     std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs, std::vector<std::uint32_t>& hits)
 {
     if (o.overlap_query) {
-        if (has_obstacle) {
+        if (o.query_box) {
+            tree.range_query(*o.query_box, hits);
+            r.reported += hits.size();
+        } else if (has_obstacle) {
             tree.overlapping_pairs(obstacle, pairs);
             r.reported += pairs.size();
         } else {

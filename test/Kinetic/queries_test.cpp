@@ -2,7 +2,8 @@
 // interface"): box overlap of two trees, self-overlap without adjacent primitives, first ray hit on
 // triangles and box range queries at random times equal brute force over all primitives, for the
 // kinetic tree and both baselines; the traversal hook visits the same leaf pairs; point clouds with
-// a proximity margin; the ray casts of run_kinetic_scene give the same hits with every method.
+// a proximity margin; the ray casts of run_kinetic_scene give the same hits with every method, and
+// its query box the primitives of brute force.
 #include <PCCD/Kinetic/Kinetic_AABB_tree.h>
 #include <PCCD/Kinetic/Refit_AABB_tree.h>
 #include <PCCD/Kinetic/boxes_overlap.h>
@@ -333,6 +334,33 @@ TEST_CASE("run_kinetic_scene: ray casts hit the same triangles with every method
     CHECK(kinetic.reported < kinetic.queries); // ... and miss it sometimes
     // The rays are fixed for a run: playing again gives the same hits.
     CHECK(PCCD::run_kinetic_scene(scene, PCCD::Kinetic_method::kinetic, options).reported == kinetic.reported);
+}
+
+TEST_CASE("run_kinetic_scene: a query box replaces the overlap, with the primitives of brute force", "[kinetic][query]")
+{
+    const auto scene = PCCD::make_cloth_scene({.triangles = 200, .duration = 1.0});
+    // A box over the table's edge at +x (the cloth drapes over it once it has fallen).
+    Eigen::AlignedBox3d table;
+    for (const auto& plan : scene.obstacle_flightplans) table.extend(plan.position(scene.start_time));
+    const Eigen::Vector3d edge(table.max().x(), table.center().y(), table.max().z());
+    const Eigen::AlignedBox3d box(edge - Eigen::Vector3d(0.2, 0.2, 0.3), edge + Eigen::Vector3d(0.2, 0.2, 0.1));
+    const PCCD::Kinetic_run_options options{.query_hz = 20, .query_box = box};
+    std::uint64_t expected = 0;
+    for (int k = 1; k <= 20; ++k) {
+        const double t = scene.start_time + k / 20.0;
+        for (const auto& b : primitive_boxes(scene.flightplans, scene.primitives, t))
+            if (overlap(b, box, 0.0)) ++expected;
+    }
+    REQUIRE(expected > 0);
+    for (const auto method : {PCCD::Kinetic_method::kinetic, PCCD::Kinetic_method::bottom_up,
+                              PCCD::Kinetic_method::rebuild}) {
+        const auto r = PCCD::run_kinetic_scene(scene, method, options);
+        CHECK(r.frames == 20);
+        CHECK(r.queries == 20);
+        CHECK(r.reported == expected);
+    }
+    // Without the box the same run answers the table overlap: other counts.
+    CHECK(PCCD::run_kinetic_scene(scene, PCCD::Kinetic_method::kinetic, {.query_hz = 20}).reported != expected);
 }
 
 TEST_CASE("run_kinetic_scene: ray casts on a point scene are rejected", "[kinetic][query]")
