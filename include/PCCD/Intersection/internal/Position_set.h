@@ -42,7 +42,10 @@ private:
     };
     static constexpr std::uint32_t empty = 0xffffffffu; // no block index reaches it (positions < 2^32)
 
-    static std::size_t hash(std::uint32_t key) { return std::size_t((std::uint64_t(key) * 0x9e3779b97f4a7c15ull) >> 40); }
+    static std::size_t hash(std::uint32_t key)
+    {
+        return std::size_t((std::uint64_t(key) * 0x9e3779b97f4a7c15ull) >> 32); // Fibonacci hashing
+    }
 
     std::uint64_t find(std::uint32_t key) const
     {
