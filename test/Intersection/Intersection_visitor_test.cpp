@@ -2,7 +2,9 @@
 // separate distances, queried with a recording visitor. Every evaluation event is recomputed through
 // the object's own surface (the value, and which object it belongs to); brackets are sign changes of
 // one surface between two points of the other cloud; node and leaf pairs are valid indices (leaf
-// pairs are leaves) and as many as the counters say; the answer is the same without the visitor.
+// pairs are leaves of A and B, in that order, within reach of each other) and, under the walked
+// traversals, as many as the counters say for first hits and curves alike; the answer is the same
+// without the visitor.
 #include <PCCD/Intersection/Intersection_visitor.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
@@ -46,7 +48,7 @@ TEST_CASE("A visitor sees every evaluation, bracket, node pair and leaf pair of 
     const auto sb = pccd_test::sample_shape(pccd_test::unit_sphere(), 2500, 0.0, 42);
     const PCCD::Point_cloud_object<> a(pccd_test::columns(sa.points)), b(pccd_test::columns(sb.points));
     const PCCD::Rigid_transform_3<double> pose_a(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero());
-    std::size_t with_brackets = 0, with_pairs = 0;
+    std::size_t with_brackets = 0, with_pairs = 0, curve_pairs = 0;
     for (const double d : {0.3, 1.0, 1.9, 1.99, 2.02, 2.1, 3.0}) {
         const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.4 * d, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
         const PCCD::Rigid_transform_3<double> pose_b(turn, Eigen::Vector3d(d, 0.1, 0.0));
@@ -92,13 +94,21 @@ TEST_CASE("A visitor sees every evaluation, bracket, node pair and leaf pair of 
                     REQUIRE(j < b.hierarchy().nodes().size());
                 }
                 for (const auto& [i, j] : recorder.leaves) {
-                    CHECK(a.hierarchy().node(i).is_leaf());
-                    CHECK(b.hierarchy().node(j).is_leaf());
+                    const auto& na = a.hierarchy().node(i);
+                    const auto& nb = b.hierarchy().node(j);
+                    CHECK(na.is_leaf());
+                    CHECK(nb.is_leaf());
+                    // A's leaf i and B's leaf j (not the other way round): their boxes, grown by their
+                    // reaches, pass the traversals' box test (face normals of both boxes).
+                    CHECK(PCCD::grown_boxes_may_overlap(na.box, pose_b.inverse() * pose_a, na.reach, nb.box, nb.reach));
                 }
-                if (first_hit && traversal != PCCD::Traversal::flat) {
+                // Under the walked traversals every counted pair is reported (separation test, walk,
+                // reach regions of intersection_points).
+                if (traversal != PCCD::Traversal::flat) {
                     CHECK(recorder.nodes.size() == seen.counters.node_pairs);
                     CHECK(recorder.leaves.size() == seen.counters.leaf_pairs);
                     with_pairs += recorder.nodes.empty() ? 0 : 1;
+                    curve_pairs += !first_hit && !recorder.leaves.empty() ? 1 : 0;
                 }
             }
         }
@@ -106,4 +116,5 @@ TEST_CASE("A visitor sees every evaluation, bracket, node pair and leaf pair of 
     // The poses exercise every event.
     CHECK(with_brackets > 0);
     CHECK(with_pairs > 0);
+    CHECK(curve_pairs > 0);
 }

@@ -406,11 +406,13 @@ bool reaches_meet(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t
 /// The points of s (indices of the cloud, in hierarchy order of s) that lie within the reach of
 /// some point of t (per `rule_t`) once mapped by `s_to_t`. `max_leaf_pairs`: give up (return false,
 /// `out` partial) once the traversal has compared more leaf pairs than this; true when `out` is
-/// complete. Exact.
-inline bool points_within_reach(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t,
-                                const Rigid_transform_3<double>& s_to_t, const Reach_rule& rule_t,
-                                std::vector<std::uint32_t>& out, Reach_counters& counters,
-                                std::size_t max_leaf_pairs = std::numeric_limits<std::size_t>::max())
+/// complete. Exact. `observer`: as for for_each_leaf_pair_within_reach().
+template <PairObserver Observer = Ignore_pairs>
+bool points_within_reach(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t,
+                         const Rigid_transform_3<double>& s_to_t, const Reach_rule& rule_t,
+                         std::vector<std::uint32_t>& out, Reach_counters& counters,
+                         std::size_t max_leaf_pairs = std::numeric_limits<std::size_t>::max(),
+                         Observer&& observer = Observer())
 {
     using Index = Point_cloud_hierarchy::Index;
     out.clear();
@@ -424,7 +426,8 @@ inline bool points_within_reach(const Point_cloud_hierarchy& s, const Point_clou
             }
             pairs.emplace_back(i, j);
             return true;
-        });
+        },
+        false, false, observer);
     counters.node_pairs += c.node_pairs;
     counters.leaf_pairs += c.leaf_pairs;
     if (!complete) return false;

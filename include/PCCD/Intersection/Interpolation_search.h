@@ -214,7 +214,8 @@ struct Interpolation_search {
             run_role_paths(sampled, tested, sampler, epsilon, state);
         } else {
             internal::Reach_region_sampler sampler(hs, ht, s_to_t, Reach_rule{.scale = 1.0, .cap = tested.support_radius()},
-                                                   state.counters);
+                                                   state.counters,
+                                                   internal::Visitor_pairs{state.visitor, &sampled != state.posed_a});
             run_role_paths(sampled, tested, sampler, epsilon, state);
         }
     }

@@ -1,6 +1,6 @@
 // PCCD/Intersection/Intersection_visitor.h -- the events of one intersection query, for users who
 // want to watch or instrument it (doc/manual/hierarchy.md, "Watching a query"): each node pair and
-// leaf pair of the two hierarchies the separation test and the walked first-hit traversals test,
+// leaf pair of the two hierarchies the walked traversals test (separation test, walk, reach regions),
 // each bracket the interpolation search finds, each evaluation of f. In the spirit of Boost.Graph's
 // visitors: one member per event point, all doing nothing by default.
 #pragma once
@@ -22,11 +22,12 @@ enum class Query_object : std::uint8_t { a = 0, b = 1 };
 /// order the events happen; they must not throw. A visitor does not change the query's answer.
 ///
 /// Which events each traversal reports:
-/// - node_pair and leaf_pair: the separation test (verified contacts) and the walked first-hit
-///   traversals (Traversal::depth_first, Traversal::likelihood; Interpolation_search), with node
-///   indices into a.hierarchy().nodes() and b.hierarchy().nodes(). The flat traversal and the
-///   region samplers of intersection_points() and Randomized_sampling count their pairs in the
-///   result's counters but do not report them one by one.
+/// - node_pair and leaf_pair: under the walked traversals (Traversal::depth_first,
+///   Traversal::likelihood), every pair the query counts: the separation test (verified contacts),
+///   the first-hit walk and the reach regions of intersection_points() (Interpolation_search), with
+///   node indices into a.hierarchy().nodes() and b.hierarchy().nodes(). The flat traversal's box
+///   regions (and Randomized_sampling's, under any traversal) pair leaves with inner nodes and
+///   count their pairs in the result's counters without reporting them one by one.
 /// - bracket: every bracket of the interpolation search (either traversal).
 /// - evaluation: every evaluation of f by every policy and traversal (one per counted
 ///   Intersection_counters::f_evaluations).
@@ -48,18 +49,20 @@ struct Intersection_visitor {
 
 namespace internal {
 
-/// The pair events of a traversal of A's hierarchy (s) and B's (t) forwarded to a visitor (none
-/// when null). A model of the traversals' pair observer.
+/// The pair events of a traversal of the hierarchies s and t forwarded to a visitor (none when
+/// null), as (node of A, node of B): s is A's hierarchy unless `s_is_b` (the role that samples B's
+/// points). A model of the traversals' pair observer.
 struct Visitor_pairs {
     Intersection_visitor* visitor = nullptr;
+    bool s_is_b = false;
 
-    void node_pair(std::uint32_t a, std::uint32_t b) const
+    void node_pair(std::uint32_t s_node, std::uint32_t t_node) const
     {
-        if (visitor) visitor->node_pair(a, b);
+        if (visitor) s_is_b ? visitor->node_pair(t_node, s_node) : visitor->node_pair(s_node, t_node);
     }
-    void leaf_pair(std::uint32_t a, std::uint32_t b) const
+    void leaf_pair(std::uint32_t s_node, std::uint32_t t_node) const
     {
-        if (visitor) visitor->leaf_pair(a, b);
+        if (visitor) s_is_b ? visitor->leaf_pair(t_node, s_node) : visitor->leaf_pair(s_node, t_node);
     }
 };
 

@@ -17,6 +17,7 @@
 #include <PCCD/Hierarchy/Point_cloud_hierarchy.h>
 #include <PCCD/Hierarchy/reach_traversal.h>
 #include <PCCD/Intersection/Intersection_result.h>
+#include <PCCD/Intersection/Intersection_visitor.h>
 #include <PCCD/Intersection/internal/overlap_region.h>
 #include <PCCD/Random.h>
 #include <PCCD/Rigid_transform_3.h>
@@ -26,7 +27,8 @@ namespace PCCD::internal {
 /// The walked traversals' region for intersection_points(): the points of s within the reach of t
 /// (Reach_rule `rule`; s mapped by s_to_t), drawn as positions k of s's hierarchy order. Enumerated
 /// at once when the walk finds at most `eager_leaf_pairs` leaf pairs (a near miss or a small
-/// contact: the list is short and exact, and an empty region costs no draw).
+/// contact: the list is short and exact, and an empty region costs no draw). The traversal's node
+/// and leaf pairs go to `pairs` (a query's visitor).
 struct Reach_region {
     static constexpr std::size_t eager_leaf_pairs = 64;
 
@@ -34,6 +36,7 @@ struct Reach_region {
     const Point_cloud_hierarchy* t;
     Rigid_transform_3<double> s_to_t;
     Reach_rule rule;
+    Visitor_pairs pairs;
 
     std::size_t size() const { return s->size(); }
     std::uint32_t id(std::uint32_t k) const { return s->order()[k]; }
@@ -54,7 +57,7 @@ private:
         std::vector<std::uint32_t> out;
         Reach_counters c;
         const bool complete = points_within_reach(*s, *t, s_to_t, rule, out, c,
-                                                  max_leaf_pairs.value_or(std::numeric_limits<std::size_t>::max()));
+                                                  max_leaf_pairs.value_or(std::numeric_limits<std::size_t>::max()), pairs);
         counters.node_pairs += c.node_pairs;
         counters.leaf_pairs += c.leaf_pairs;
         if (!complete) return std::nullopt;
@@ -68,8 +71,8 @@ class Reach_region_sampler : public Two_phase_sampler<Reach_region> {
 public:
     Reach_region_sampler(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t,
                          const Rigid_transform_3<double>& s_to_t, const Reach_rule& rule_t,
-                         Intersection_counters& counters)
-        : Two_phase_sampler<Reach_region>(Reach_region{&s, &t, s_to_t, rule_t}, counters)
+                         Intersection_counters& counters, Visitor_pairs pairs = {})
+        : Two_phase_sampler<Reach_region>(Reach_region{&s, &t, s_to_t, rule_t, pairs}, counters)
     {
     }
 };
