@@ -40,8 +40,8 @@ enum class Partner_choice : std::uint8_t {
     /// surface's f (the normal comes with the evaluation at p_i): opposite-signed ones first, those
     /// predicted half a sampling radius of the other surface across it first (deep enough to be
     /// across despite the prediction's error, shallow enough to stay inside the other surface's
-    /// domain). Measured to find a bracket with fewer evaluations than random draws and than the
-    /// most strongly opposite first (doc/benchmarks.md).
+    /// domain); only candidates predicted across are tried. Measured to find a bracket with fewer
+    /// evaluations than random draws and than the most strongly opposite first (doc/benchmarks.md).
     predicted = 0,
     /// Random candidates from the annulus, as in WSCG05.
     random = 1,
