@@ -3,7 +3,7 @@
 # Left: total BV updates over the animation vs cloth triangles (kinetic bound changes are the same
 # at every query rate; kinetic nodes changed per frame at 30 Hz for comparison). Middle: median
 # processor time per frame (update + the table overlap query) vs query rate (wall-clock time is in
-# column 15). Third: the same with ray casts ("+rays" rows) instead of the overlap query. Right:
+# column 15). Third: the same with ray casts ("+rays" rows) instead of the overlap query. Fourth:
 # time per frame kinetic / refit, overlap and rays, flightplans evaluated or the frame's positions
 # given ("+given" rows), with the 0.8 target. Fifth (when the CSV has "+box<f>" rows): kinetic /
 # refit for range queries with boxes over the table's edge, whose answers are a small part of the
