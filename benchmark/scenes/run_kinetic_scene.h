@@ -128,15 +128,12 @@ inline std::vector<Kinetic_ray> kinetic_run_rays(const Eigen::AlignedBox3d& boun
 }
 
 template <class Tree, class Obstacle>
-void answer_queries(const Tree& tree, const Obstacle& obstacle, bool has_obstacle, const Eigen::AlignedBox3d& range,
+void answer_queries(const Tree& tree, const Obstacle& obstacle, bool overlap_with_obstacle, const Eigen::AlignedBox3d& range,
                     const std::vector<Kinetic_ray>& rays, const Kinetic_run_options& o, Kinetic_run_result& r,
                     std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs, std::vector<std::uint32_t>& hits)
 {
     if (o.overlap_query) {
-        if (o.query_box) {
-            tree.range_query(*o.query_box, hits);
-            r.reported += hits.size();
-        } else if (has_obstacle) {
+        if (overlap_with_obstacle) {
             tree.overlapping_pairs(obstacle, pairs);
             r.reported += pairs.size();
         } else {
@@ -190,10 +187,13 @@ Kinetic_run_result run_kinetic_scene(const Kinetic_scene<P>& scene, Kinetic_meth
     Kinetic_run_result r;
     r.method = method;
     Kinetic_AABB_tree<F> obstacle(scene.obstacle_flightplans, scene.obstacle_triangles, scene.start_time);
-    const bool has_obstacle = !scene.obstacle_triangles.empty();
+    // The overlap query: with the obstacle, or a range query with the query box (if set) or else
+    // the middle eighth of the scene's initial bounding box.
+    const bool overlap_with_obstacle = !scene.obstacle_triangles.empty() && !options.query_box;
     Eigen::AlignedBox3d bounds;
     for (const F& f : scene.flightplans) bounds.extend(f.position(scene.start_time));
-    const Eigen::AlignedBox3d range(bounds.center() - 0.25 * bounds.sizes(), bounds.center() + 0.25 * bounds.sizes());
+    const Eigen::AlignedBox3d range = options.query_box.value_or(
+        Eigen::AlignedBox3d(bounds.center() - 0.25 * bounds.sizes(), bounds.center() + 0.25 * bounds.sizes()));
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
     std::vector<std::uint32_t> hits;
     const std::vector<Kinetic_ray> rays = internal::kinetic_run_rays(bounds, options.rays_per_frame);
@@ -222,7 +222,7 @@ Kinetic_run_result run_kinetic_scene(const Kinetic_scene<P>& scene, Kinetic_meth
             obstacle.advance_to(t);
             const auto t1 = Clock::now();
             const std::clock_t c1 = std::clock();
-            internal::answer_queries(tree, obstacle, has_obstacle, range, rays, options, r, pairs, hits);
+            internal::answer_queries(tree, obstacle, overlap_with_obstacle, range, rays, options, r, pairs, hits);
             const auto t2 = Clock::now();
             const std::clock_t c2 = std::clock();
             update += std::chrono::duration<double, std::milli>(t1 - t0).count();

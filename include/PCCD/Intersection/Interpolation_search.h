@@ -11,7 +11,6 @@
 #include <limits>
 #include <optional>
 #include <type_traits>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 

@@ -16,7 +16,8 @@ namespace PCCD {
 /// the traversal's thread, in the order of the traversal; must not throw.
 ///
 /// Models: PCCD::Ignore_pairs (nothing), internal::Visitor_pairs (forwards to an
-/// Intersection_visitor), and Intersection_visitor itself.
+/// Intersection_visitor, swapping the indices back into A and B when s is B's hierarchy), and
+/// Intersection_visitor itself.
 template <class O>
 concept PairObserver = requires(O& observer, std::uint32_t i, std::uint32_t j) {
     observer.node_pair(i, j);

@@ -48,41 +48,34 @@ private:
         return std::size_t((std::uint64_t(key) * 0x9e3779b97f4a7c15ull) >> 32); // Fibonacci hashing
     }
 
-    std::uint64_t find(std::uint32_t key) const
+    /// The slot holding `key`, or the free slot where it would go. \pre m_slots is not empty.
+    std::size_t slot_of(std::uint32_t key) const
     {
-        if (m_slots.empty()) return 0;
         const std::size_t wrap = m_slots.size() - 1;
-        for (std::size_t i = hash(key) & wrap;; i = (i + 1) & wrap) {
-            if (m_slots[i].key == key) return m_slots[i].mask;
-            if (m_slots[i].key == empty) return 0;
-        }
+        std::size_t i = hash(key) & wrap;
+        while (m_slots[i].key != key && m_slots[i].key != empty) i = (i + 1) & wrap;
+        return i;
     }
+
+    std::uint64_t find(std::uint32_t key) const { return m_slots.empty() ? 0 : m_slots[slot_of(key)].mask; }
 
     std::uint64_t& block(std::uint32_t key)
     {
         if (2 * (m_used + 1) > m_slots.size()) grow();
-        const std::size_t wrap = m_slots.size() - 1;
-        for (std::size_t i = hash(key) & wrap;; i = (i + 1) & wrap) {
-            if (m_slots[i].key == key) return m_slots[i].mask;
-            if (m_slots[i].key == empty) {
-                ++m_used;
-                m_slots[i].key = key;
-                return m_slots[i].mask;
-            }
+        Slot& slot = m_slots[slot_of(key)];
+        if (slot.key == empty) {
+            ++m_used;
+            slot.key = key;
         }
+        return slot.mask;
     }
 
     void grow()
     {
         std::vector<Slot> old = std::move(m_slots);
         m_slots.assign(old.empty() ? 16 : 2 * old.size(), Slot{});
-        const std::size_t wrap = m_slots.size() - 1;
-        for (const Slot& s : old) {
-            if (s.key == empty) continue;
-            std::size_t i = hash(s.key) & wrap;
-            while (m_slots[i].key != empty) i = (i + 1) & wrap;
-            m_slots[i] = s;
-        }
+        for (const Slot& s : old)
+            if (s.key != empty) m_slots[slot_of(s.key)] = s;
     }
 
     std::vector<Slot> m_slots;
