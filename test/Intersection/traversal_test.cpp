@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <vector>
 
 #include "../surface_test_helpers.h"
@@ -87,6 +88,56 @@ TEST_CASE("Hierarchy traversals agree with the flat traversal and the analytic t
         CHECK(wrong == 0);
         CHECK(counted >= 200);
     }
+}
+
+TEST_CASE("The predicted covering takes fewer samples and keeps the verdicts", "[hierarchy]")
+{
+    // Interpolation_search::walk_predicted_cover: annulus points predicted on a sample's side of
+    // the other surface are covered as if sampled. Against the walk without it (+infinity) and the
+    // analytic truth: the same verdicts outside the grazing band, and fewer samples on misses, where
+    // the walk samples everything within reach.
+    const Spheres& s = spheres();
+    const PCCD::Interpolation_search off{.walk_predicted_cover = std::numeric_limits<double>::infinity()};
+    const PCCD::Interpolation_search on{};
+    REQUIRE(on.walk_predicted_cover == 0.5);
+    const std::vector<Pose> ps = poses(240, 7);
+    std::size_t wrong_on = 0, wrong_off = 0, samples_on = 0, samples_off = 0, near = 0, differ = 0;
+    for (std::size_t k = 0; k < ps.size(); ++k) {
+        const Pose& p = ps[k];
+        const auto with = PCCD::do_intersect(s.a, p.a, s.b, p.b, {.seed = k}, on);
+        const auto without = PCCD::do_intersect(s.a, p.a, s.b, p.b, {.seed = k}, off);
+        differ += with.intersects != without.intersects ? 1 : 0;
+        if (p.d > 2.0 && !with.intersects && !without.intersects) { // misses: all within reach is sampled
+            ++near;
+            samples_on += with.counters.samples;
+            samples_off += without.counters.samples;
+        }
+        if (std::abs(p.d - 2.0) < 2.0 * s.r) continue; // grazing band
+        wrong_on += with.intersects != (p.d < 2.0) ? 1 : 0;
+        wrong_off += without.intersects != (p.d < 2.0) ? 1 : 0;
+    }
+    // Near misses head on, gaps of 0.2 to 1.2 sampling radii: separate with either walk (the gap is
+    // known, and f_B is about the distance to sphere B).
+    const Rigid_transform_3<double> identity(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero());
+    for (const double g : {0.2, 0.5, 0.8, 1.2}) {
+        const Rigid_transform_3<double> apart(Eigen::Matrix3d::Identity(), Eigen::Vector3d(2.0 + g * s.r, 0, 0));
+        const auto with = PCCD::do_intersect(s.a, identity, s.b, apart, {}, on);
+        const auto without = PCCD::do_intersect(s.a, identity, s.b, apart, {}, off);
+        CHECK_FALSE(with.intersects);
+        CHECK_FALSE(without.intersects);
+        ++near;
+        samples_on += with.counters.samples;
+        samples_off += without.counters.samples;
+    }
+    std::printf("predicted covering: %zu / %zu verdicts differ; wrong outside the grazing band %zu (off: %zu); "
+                "samples on %zu misses %zu (off: %zu)\n",
+                differ, ps.size(), wrong_on, wrong_off, near, samples_on, samples_off);
+    CHECK(wrong_on == 0);
+    CHECK(wrong_off == 0);
+    CHECK(double(differ) <= 0.01 * double(ps.size()));
+    REQUIRE(near >= 10);
+    CHECK(samples_off > 0);
+    CHECK(double(samples_on) <= 0.8 * double(samples_off));
 }
 
 TEST_CASE("Objects whose reaches cannot meet are separate without an f evaluation", "[hierarchy]")

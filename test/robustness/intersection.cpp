@@ -162,6 +162,8 @@ TEST_CASE("intersection: invalid options and policy fields are named", "[robustn
     isearch({.partner_candidates = 0}, {"partner_candidates must be >= 1"});
     for (const double x : {0.99, not_a_number, infinity}) isearch({.lipschitz_slack = x}, {"lipschitz_slack"});
     for (const double x : {-1.0, not_a_number, infinity}) isearch({.coverage_c = x}, {"coverage_c"});
+    for (const double x : {-0.1, -infinity, not_a_number})
+        isearch({.walk_predicted_cover = x}, {"walk_predicted_cover", "must be >= 0"});
     isearch({.partner_choice = PCCD::Partner_choice(5)}, {"unknown partner_choice"});
 
     const auto rst = [&](const PCCD::Randomized_sampling& p, const std::vector<std::string>& keywords) {

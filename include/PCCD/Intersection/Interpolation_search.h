@@ -111,6 +111,13 @@ struct Interpolation_search {
     /// is needed to hit every surfel by chance). In (0, 1]. Default 0.5: the surfel radius of the
     /// covering formula.
     double walk_cover = 0.5;
+    /// Walked first-hit queries: when a sample p_i has no annulus partner predicted across T (the
+    /// prediction of partner_choice `predicted`: f_T(p_i) + n_T(p_i) . (p_j - p_i)), the annulus points
+    /// predicted at least this fraction of |f_T(p_i)| on p_i's side of T are covered too, as if
+    /// sampled: the prediction that ruled them out as partners says their own annuli start on the
+    /// same side. >= 0 (smaller covers more); +infinity switches it off. Default 0.5: at 10^6
+    /// points, near contacts take a quarter of the samples (doc/benchmarks.md "Scale: 10^6 points").
+    double walk_predicted_cover = 0.5;
     /// Walked first-hit queries: probes per object before the walk starts. A probe starts at a random
     /// point and takes up to probe_steps alternating nearest-point steps between the two clouds,
     /// which lead to where they come closest (where they cross, in a deep overlap); the first point
@@ -146,6 +153,9 @@ struct Interpolation_search {
         if (partner_candidates == 0) throw Invalid_input("interpolation search: partner_candidates must be >= 1");
         if (!(std::isgreater(walk_cover, 0.0) && std::islessequal(walk_cover, 1.0)))
             throw Invalid_input(internal::concat("interpolation search: walk_cover ", walk_cover, " must be in (0, 1]"));
+        if (!(walk_predicted_cover >= 0.0)) // NaN fails too
+            throw Invalid_input(internal::concat("interpolation search: walk_predicted_cover ", walk_predicted_cover,
+                                                 " must be >= 0 (+infinity: off)"));
         if (!(std::isfinite(lipschitz_slack) && lipschitz_slack >= 1.0))
             throw Invalid_input(internal::concat("interpolation search: lipschitz_slack ", lipschitz_slack, " must be finite and >= 1"));
         if (partner_choice != Partner_choice::predicted && partner_choice != Partner_choice::random)

@@ -22,6 +22,7 @@
 #include <PCCD/Geodesic/Paths_on_the_fly.h>
 #include <PCCD/Geodesic/Stored_paths.h>
 #include <PCCD/Intersection/Intersection_result.h>
+#include <PCCD/Intersection/internal/Covering_grid.h>
 #include <PCCD/Intersection/internal/Query_state.h>
 #include <PCCD/Random.h>
 
@@ -45,6 +46,14 @@ std::pair<std::size_t, std::size_t> annulus_range(const Map& cpsp, std::uint32_t
         first = std::max<std::size_t>(1, size / 2);
     }
     return {first, last};
+}
+
+/// The prediction of partner choice: f_T at p_j from f_T(p_i) and T's normal there, as a distance on
+/// p_i's side of T (negative: across T). pi and pj in T's frame.
+inline double predicted_same_side(const Surface_evaluation& ei, const Eigen::Vector3d& pi, const Eigen::Vector3d& pj)
+{
+    const double sign = ei.value < 0.0 ? -1.0 : 1.0;
+    return sign * (ei.value + ei.normal.dot(pj - pi));
 }
 
 template <class Policy, class S, class Map>
@@ -71,10 +80,8 @@ void choose_partners(const Policy& policy, const Posed_object<S>& sampled, const
     // enough to be across it despite the prediction's error, not so deep that T's surface is
     // undefined there (its domain ends about one sampling radius from its points).
     const Eigen::Vector3d pi = s_to_t.transform_point(sampled.position(i));
-    const double sign = ei.value < 0.0 ? -1.0 : 1.0;
     for (std::size_t e = first; e < last; ++e) {
-        const Eigen::Vector3d pj = s_to_t.transform_point(sampled.position(targets[e]));
-        const double predicted = sign * (ei.value + ei.normal.dot(pj - pi));
+        const double predicted = predicted_same_side(ei, pi, s_to_t.transform_point(sampled.position(targets[e])));
         // Opposite: a key in [-1, 0), -1 at the preferred depth; same sign: the key >= 0.
         const double key = predicted < 0.0 ? -1.0 / (1.0 + std::abs(-predicted - depth) / depth) : predicted;
         ranked.emplace_back(key, std::uint32_t(e));
@@ -165,6 +172,9 @@ struct Isearch_role {
     std::size_t taken = 0; // samples of this role
     std::vector<std::uint32_t> path{};
     std::vector<std::pair<double, std::uint32_t>> ranked{};
+    /// The walk's covering of this role (Interpolation_search::walk_predicted_cover); none for the
+    /// flat traversal's random draws.
+    Covering_grid* cover = nullptr;
 
     Surface_evaluation evaluate_point(std::uint32_t i)
     {
@@ -194,6 +204,7 @@ struct Isearch_role {
         const auto [first, last] = annulus_range(cpsp, i, inner, rho);
         if (first >= last) return true;
         choose_partners(policy, sampled, s_to_t, cpsp, i, first, last, ei, partner_depth, ranked, state);
+        if (ranked.empty() && cover) cover_predicted(i, first, last, ei);
         for (const auto& [score, entry] : ranked) {
             if (state.out_of_budget()) return false;
             const std::uint32_t j = cpsp.targets(i)[entry];
@@ -214,6 +225,20 @@ struct Isearch_role {
             break;
         }
         return true;
+    }
+
+    /// No partner of p_i is predicted across T: its annulus points predicted well on p_i's side
+    /// (walk_predicted_cover) join the covering.
+    void cover_predicted(std::uint32_t i, std::size_t first, std::size_t last, const Surface_evaluation& ei)
+    {
+        const double least = policy.walk_predicted_cover * std::abs(ei.value);
+        if (!std::isfinite(least)) return;
+        const Eigen::Vector3d pi = s_to_t.transform_point(sampled.position(i));
+        const auto targets = cpsp.targets(i);
+        for (std::size_t e = first; e < last; ++e) {
+            const Eigen::Vector3d local = sampled.position(targets[e]);
+            if (predicted_same_side(ei, pi, s_to_t.transform_point(local)) >= least) cover->add(local);
+        }
     }
 };
 

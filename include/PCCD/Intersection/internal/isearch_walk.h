@@ -186,6 +186,8 @@ void walk_first_hit(const Policy& policy, const Posed_object<A>& a, const Posed_
             Position_set done_a, done_b;
             Covering_grid cover_a(std::max(policy.walk_cover * role_a.rho, tiny));
             Covering_grid cover_b(std::max(policy.walk_cover * role_b.rho, tiny));
+            role_a.cover = &cover_a;
+            role_b.cover = &cover_b;
             const auto active = [&] { return (use_a && role_a.taken < cap) || (use_b && role_b.taken < cap); };
             // A deep overlap has contacts all over: a few random points within reach find one
             // sooner than the walk, which goes to the leaves first.
