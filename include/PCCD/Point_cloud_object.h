@@ -83,7 +83,7 @@ public:
     using Euclidean_surface = WLS_surface<Euclidean_distance<K>, Gaussian_weight>;
 
     /// Version of the file format written by save().
-    static constexpr std::uint32_t file_version = 4;
+    static constexpr std::uint32_t file_version = 5;
 
     /// \name Construction
     /// @{
@@ -171,12 +171,17 @@ public:
     }
 
     /// Loads an object written by save(). The kd-tree is rebuilt; everything else is read back bit
-    /// for bit.
+    /// for bit. The hierarchy is rebuilt from the layout the file stores (the same tree, its boxes,
+    /// slabs or spheres recomputed from the points: Point_cloud_hierarchy's Layout constructor);
+    /// a file of format version 4 or older, which has none, gets one built with default options.
     /// \throws File_error naming the file and the problem when it is missing, not a PCCD object
     ///         file, of another format version or byte order, truncated, corrupted (checksum) or
-    ///         inconsistent.
-    /// The hierarchy is not stored in the file: it is rebuilt with `hierarchy` (default options).
-    static Point_cloud_object load(const std::string& path, const Point_cloud_hierarchy_options& hierarchy = {});
+    ///         inconsistent (a stored hierarchy layout that is not a median-split tree of its points
+    ///         among them).
+    static Point_cloud_object load(const std::string& path);
+    /// load() with the hierarchy's options given: the stored hierarchy when it has this leaf size and
+    /// volume, otherwise one built with `hierarchy`.
+    static Point_cloud_object load(const std::string& path, const Point_cloud_hierarchy_options& hierarchy);
     /// @}
 
     /// Writes the object to the binary file `path` (replacing it): points, normals, parameters,
@@ -370,7 +375,10 @@ private:
                           const Gaussian_weight& weight, Eigen::Matrix3Xd normals, Eigen::VectorXd domain,
                           Orientation_report orientation, bool normals_given, Scan_estimate scan,
                           Preprocessing_times timings, const Point_cloud_object_options& options,
-                          std::vector<std::uint32_t> input_index);
+                          std::vector<std::uint32_t> input_index,
+                          const Point_cloud_hierarchy::Layout* layout = nullptr);
+    /// load() with the caller's hierarchy options, or none (the stored hierarchy as it is).
+    static Point_cloud_object load_file(const std::string& path, const Point_cloud_hierarchy_options* hierarchy);
     /// Removes the points `outliers` (ascending positions in `cloud`) of `cloud`, their given normals
     /// and their entries of `input_index`, in place, and turns `outliers` into the input indices of
     /// those points, ascending.

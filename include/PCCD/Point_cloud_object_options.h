@@ -87,7 +87,8 @@ struct Point_cloud_object_options {
     /// Isolated points (stray returns of a scanner) left out of the surface before anything else is
     /// built (default: removed, see Outlier_options).
     Outlier_options outliers = {};
-    /// The point cloud hierarchy the intersection queries traverse (default: leaves of 16 points).
+    /// The point cloud hierarchy the intersection queries traverse (default: leaves of 8 points, boxes
+    /// and slabs). Its `threads`, when unset, takes `threads` below.
     Point_cloud_hierarchy_options hierarchy = {};
     /// Store the points in a spatial (Morton, Z-order) order rather than in the order given, so that
     /// points near in space are near in memory: every stage that visits neighbourhoods (graph, CPSP
@@ -116,7 +117,7 @@ inline Point_cloud_object_options resolve_threads(Point_cloud_object_options opt
 {
     for (std::optional<unsigned>* stage : {&options.sphere_of_influence.threads, &options.knn.threads,
                                            &options.sampling_radius.threads, &options.domain.threads,
-                                           &options.outliers.threads})
+                                           &options.outliers.threads, &options.hierarchy.threads})
         if (!*stage) *stage = options.threads;
     return options;
 }
@@ -130,7 +131,7 @@ struct Preprocessing_times {
     double cpsp = 0.0;
     /// Normal estimation and orientation.
     double normals = 0.0;
-    /// The point cloud hierarchy (rebuilt on load, like the kd-tree).
+    /// The point cloud hierarchy (rebuilt on load from the layout the file stores, or built).
     double hierarchy = 0.0;
     /// The local spacing: outlier test and domain radii (0 for a loaded object, which reads them).
     double outliers = 0.0;

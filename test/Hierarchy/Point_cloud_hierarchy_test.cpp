@@ -1,11 +1,15 @@
 // Tests of PCCD/Hierarchy/Point_cloud_hierarchy.h with reaches, against brute force over the points:
 // every point in exactly one leaf, every box contains its children and points, a node's reach is
 // the largest of its points', every slab holds its node's points and is thin on a plane, the
-// ordered points are the points in order(); bad reaches throw; a refit drops the slabs.
+// ordered points are the points in order(); bad reaches throw; a refit drops the slabs. The box and
+// sphere volumes: every sphere holds its node's points (built and refitted), a box tree has no
+// slabs. A hierarchy rebuilt from its layout is the build, bit for bit, and a layout that is not a
+// median-split tree of the points is refused; the build does not depend on the thread count.
 #include <PCCD/Hierarchy/Point_cloud_hierarchy.h>
 
 #include <catch2/catch.hpp>
 
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -158,4 +162,141 @@ TEST_CASE("A refit with the wrong number of points, a non-finite point or a bad 
     CHECK_THROWS_WITH(PCCD::Point_cloud_hierarchy(h, p, reach), Contains("reach of point 3"));
     CHECK_THROWS_AS(PCCD::Point_cloud_hierarchy(h, p, Eigen::VectorXd::Constant(7, 0.1)), PCCD::Invalid_input);
     CHECK_THROWS_AS(PCCD::Point_cloud_hierarchy(PCCD::Point_cloud_hierarchy(), p, Eigen::VectorXd()), PCCD::Invalid_input);
+}
+
+namespace {
+
+using V = PCCD::Bounding_volume;
+
+/// Every field of every node, the order, the ordered points and the spheres are the same, bit for bit.
+void require_same_hierarchy(const PCCD::Point_cloud_hierarchy& a, const PCCD::Point_cloud_hierarchy& b)
+{
+    REQUIRE(a.nodes().size() == b.nodes().size());
+    REQUIRE(a.order() == b.order());
+    REQUIRE(a.volume() == b.volume());
+    REQUIRE(a.leaf_size() == b.leaf_size());
+    CHECK(a.has_reach() == b.has_reach());
+    CHECK(a.ordered_points() == b.ordered_points());
+    REQUIRE(a.has_spheres() == b.has_spheres());
+    for (Index i = 0; i < a.nodes().size(); ++i) {
+        const auto &x = a.node(i), &y = b.node(i);
+        CHECK(x.box.min() == y.box.min());
+        CHECK(x.box.max() == y.box.max());
+        CHECK(x.first == y.first);
+        CHECK(x.count == y.count);
+        CHECK(x.right == y.right);
+        CHECK(x.reach == y.reach);
+        CHECK(x.slab_normal == y.slab_normal);
+        CHECK(std::memcmp(&x.slab_min, &y.slab_min, sizeof(double)) == 0);
+        CHECK(std::memcmp(&x.slab_max, &y.slab_max, sizeof(double)) == 0);
+        if (a.has_spheres()) {
+            CHECK(a.sphere(i).centre == b.sphere(i).centre);
+            CHECK(a.sphere(i).radius == b.sphere(i).radius);
+        }
+    }
+}
+
+} // namespace
+
+TEST_CASE("Sphere and box volumes: every sphere holds its node's points, a box tree has no slabs", "[hierarchy]")
+{
+    for (const std::size_t n : {1u, 9u, 1000u}) {
+        const Eigen::Matrix3Xd p = pccd_test::hierarchy_points(n, 2 * n + 1, 0.2);
+        const Eigen::VectorXd reach = pccd_test::hierarchy_reaches(n, 3 * n, 0.0, 0.1);
+        const PCCD::Point_cloud_hierarchy spheres(p, reach, {.volume = V::sphere});
+        const PCCD::Point_cloud_hierarchy boxes(p, reach, {.volume = V::box});
+        const PCCD::Point_cloud_hierarchy slabs(p, reach);
+        CHECK(spheres.volume() == V::sphere);
+        CHECK(slabs.volume() == V::box_and_slab);
+        REQUIRE(spheres.has_spheres());
+        CHECK_FALSE(boxes.has_spheres());
+        CHECK_FALSE(slabs.has_spheres());
+        // The tree itself does not depend on the volume.
+        CHECK(spheres.order() == slabs.order());
+        CHECK(boxes.order() == slabs.order());
+        REQUIRE(spheres.nodes().size() == slabs.nodes().size());
+        // A refit of the sphere tree over moved points: spheres from children, still holding every point.
+        Eigen::Matrix3Xd q = p;
+        for (Eigen::Index i = 0; i < q.cols(); ++i) q.col(i) += Eigen::Vector3d(0.5 * p(1, i) * p(1, i), 0.0, 0.3 * p(0, i));
+        const PCCD::Point_cloud_hierarchy refitted(spheres, q, reach);
+        REQUIRE(refitted.has_spheres());
+        for (Index i = 0; i < slabs.nodes().size(); ++i) {
+            CHECK(spheres.node(i).right == slabs.node(i).right);
+            CHECK_FALSE(spheres.node(i).has_slab());
+            CHECK_FALSE(boxes.node(i).has_slab());
+            CHECK(slabs.node(i).has_slab());
+            const auto& sphere = spheres.sphere(i);
+            // No larger than the ball about the box centre through the box's corners.
+            CHECK(sphere.radius <= 0.5 * slabs.node(i).box.diagonal().norm() * (1 + 1e-12) + 1e-300);
+            for (const Index k : spheres.points_of(i)) {
+                CHECK((p.col(k) - sphere.centre).norm() <= sphere.radius);
+                CHECK((q.col(k) - refitted.sphere(i).centre).norm() <= refitted.sphere(i).radius);
+            }
+        }
+    }
+}
+
+TEST_CASE("A hierarchy rebuilt from its layout is the build, bit for bit, for every volume", "[hierarchy]")
+{
+    for (const V volume : {V::box_and_slab, V::box, V::sphere})
+        for (const std::size_t n : {1u, 8u, 9u, 777u}) {
+            const Eigen::Matrix3Xd p = pccd_test::hierarchy_points(n, 5 * n + 2, 0.1);
+            const Eigen::VectorXd reach = pccd_test::hierarchy_reaches(n, 11 * n, 0.0, 0.1);
+            for (const std::size_t leaf : {1u, 8u}) {
+                const PCCD::Point_cloud_hierarchy built(p, reach, {.leaf_size = leaf, .volume = volume});
+                const PCCD::Point_cloud_hierarchy::Layout layout = built.layout();
+                CHECK(layout.leaf_size == leaf);
+                CHECK(layout.volume == volume);
+                require_same_hierarchy(PCCD::Point_cloud_hierarchy(layout, p, reach), built);
+            }
+        }
+    // Coincident points: one leaf above the leaf size, kept by the layout.
+    const Eigen::Matrix3Xd same = Eigen::Matrix3Xd::Constant(3, 20, 0.5);
+    const PCCD::Point_cloud_hierarchy one(same, Eigen::VectorXd(), {.leaf_size = 4});
+    REQUIRE(one.nodes().size() == 1);
+    require_same_hierarchy(PCCD::Point_cloud_hierarchy(one.layout(), same, Eigen::VectorXd()), one);
+}
+
+TEST_CASE("A layout that is not a median-split tree of the points is refused", "[hierarchy]")
+{
+    const Eigen::Matrix3Xd p = pccd_test::hierarchy_points(100, 9, 0.5);
+    const PCCD::Point_cloud_hierarchy h(p, Eigen::VectorXd(), {.leaf_size = 4});
+    const PCCD::Point_cloud_hierarchy::Layout good = h.layout();
+    REQUIRE(good.rights[0] != 0);
+    const auto refused = [&](auto&& edit, const std::string& words) {
+        PCCD::Point_cloud_hierarchy::Layout bad = good;
+        edit(bad);
+        CHECK_THROWS_WITH(PCCD::Point_cloud_hierarchy(bad, p, Eigen::VectorXd()), Contains(words));
+    };
+    refused([](auto& l) { l.order[7] = l.order[3]; }, "not a permutation");
+    refused([](auto& l) { l.order[7] = 100; }, "not a permutation");
+    refused([](auto& l) { l.order.pop_back(); }, "99 indices in the order for 100 points");
+    refused([](auto& l) { l.counts[0] = 99; }, "the root holds 99 of 100 points");
+    refused([](auto& l) { l.rights.pop_back(); }, "right children");
+    refused([](auto& l) { l.counts.clear(), l.rights.clear(); }, "0 node counts");
+    refused([](auto& l) { l.rights[0] += 1; }, "is not where its left subtree ends");
+    refused([](auto& l) { l.rights[0] = 0xffffffffu; }, "is not where its left subtree ends");
+    refused([](auto& l) { l.counts[1] -= 1, l.counts[l.rights[0]] += 1; }, "is not split at its median");
+    refused([](auto& l) { l.leaf_size = 1000; }, "is not split at its median");
+    refused([](auto& l) { l.volume = PCCD::Bounding_volume(7); }, "unknown bounding volume 7");
+    // The root made a leaf of all 100 points (the rest of the nodes dangling; then alone).
+    refused([](auto& l) { l.rights[0] = 0; }, "nodes outside the tree");
+    refused([](auto& l) { l.rights = {0}, l.counts = {100}; }, "leaf 0 holds 100 points that do not coincide");
+    // Points that do not match: another cloud of the same size is fine (a layout is only a shape),
+    // another size is not.
+    CHECK_THROWS_WITH(PCCD::Point_cloud_hierarchy(good, Eigen::Matrix3Xd(p.leftCols(50)), Eigen::VectorXd()),
+                      Contains("50 points"));
+}
+
+TEST_CASE("The build does not depend on the thread count", "[hierarchy]")
+{
+    // Enough points for the parallel halves (more than 2^14 per subtree at the top).
+    const Eigen::Matrix3Xd p = pccd_test::hierarchy_points(70000, 21, 0.05);
+    const Eigen::VectorXd reach = pccd_test::hierarchy_reaches(70000, 22, 0.0, 0.01);
+    for (const V volume : {V::box_and_slab, V::sphere}) {
+        const PCCD::Point_cloud_hierarchy one(p, reach, {.volume = volume, .threads = 1u});
+        const PCCD::Point_cloud_hierarchy all(p, reach, {.volume = volume});
+        require_same_hierarchy(all, one);
+    }
+    CHECK_THROWS_WITH(PCCD::Point_cloud_hierarchy(p, reach, {.threads = 0u}), Contains("threads = 0"));
 }

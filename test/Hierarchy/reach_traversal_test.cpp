@@ -1,7 +1,8 @@
 // Tests of PCCD/Hierarchy/reach_traversal.h against brute force over all point pairs: within_reach,
 // points_within_reach, reaches_meet, leaf_pair_gap and the leaf pairs of
 // for_each_leaf_pair_within_reach (both margins: sum and larger reach), for random clouds, reaches,
-// rules and poses, in both child orders; the slabs prune node pairs of tilted flat patches.
+// rules and poses, in both child orders, for every bounding volume and mixed pairs of them; the slabs
+// prune node pairs of tilted flat patches.
 #include <PCCD/Hierarchy/reach_traversal.h>
 
 #include <catch2/catch.hpp>
@@ -22,13 +23,14 @@ struct Clouds {
     Eigen::VectorXd rs, rt;
     PCCD::Point_cloud_hierarchy s, t;
 
-    Clouds(std::uint64_t seed, double flat)
+    Clouds(std::uint64_t seed, double flat, PCCD::Bounding_volume vs = PCCD::Bounding_volume::box_and_slab,
+           PCCD::Bounding_volume vt = PCCD::Bounding_volume::box_and_slab)
         : ps(pccd_test::hierarchy_points(700, seed, flat)),
           pt(pccd_test::hierarchy_points(500, seed + 100, flat)),
           rs(pccd_test::hierarchy_reaches(700, seed + 200, 0.01, 0.06)),
           rt(pccd_test::hierarchy_reaches(500, seed + 300, 0.01, 0.06)),
-          s(ps, rs, {.leaf_size = 8}),
-          t(pt, rt, {.leaf_size = 8})
+          s(ps, rs, {.leaf_size = 8, .volume = vs}),
+          t(pt, rt, {.leaf_size = 8, .volume = vt})
     {
     }
 };
@@ -45,8 +47,14 @@ bool brute_within(const Eigen::Matrix3Xd& pt, const Eigen::VectorXd& rt, const P
 
 TEST_CASE("Reach tests agree with brute force over all point pairs", "[hierarchy]")
 {
+    using V = PCCD::Bounding_volume;
+    // Each seed pairs the two hierarchies' volumes differently: every volume, and mixed pairs.
+    const std::pair<V, V> volumes[] = {{V::box_and_slab, V::box_and_slab}, {V::sphere, V::sphere}, {V::box, V::box},
+                                       {V::sphere, V::box_and_slab},       {V::box, V::sphere},    {V::box_and_slab, V::box}};
     for (std::uint64_t seed = 1; seed <= 12; ++seed) {
-        const Clouds c(seed, seed % 2 == 0 ? 0.05 : 1.0);
+        const auto [vs, vt] = volumes[seed % 6];
+        INFO("volumes " << PCCD::to_string(vs) << " and " << PCCD::to_string(vt));
+        const Clouds c(seed, seed % 2 == 0 ? 0.05 : 1.0, vs, vt);
         // From deep overlap to apart (shifts up to 3 for unit clouds).
         const PCCD::Rigid_transform_3<double> s_to_t = pccd_test::hierarchy_pose(seed, 0.25 * double(seed));
         const PCCD::Reach_rule rule_s{.scale = 0.5 + 0.1 * double(seed % 5), .cap = 0.05};

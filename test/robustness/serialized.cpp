@@ -82,14 +82,15 @@ const std::string& object_bytes()
 /// so that they do not depend on the number of timing fields.
 struct Object_layout {
     std::size_t n, sampling_radius = 24, bandwidth = 32, theta_eps = 40, points, normals, fit, input_indices,
-        geodesic_size, geodesic;
+        hierarchy, nodes, geodesic_size, geodesic;
 };
 
 Object_layout object_layout(const std::string& bytes, std::size_t n)
 {
-    // Version 4 (Point_cloud_object.h): a 113-byte header, points 24N, normals 24N, then the scan
+    // Version 5 (Point_cloud_object.h): a 113-byte header, points 24N, normals 24N, then the scan
     // section (f64 noise, u64 input points, u64 M, u32 outliers[M], u64 D, f64 radii[D]), u8 fit,
-    // u64 I (= N), u32 input indices[I], u64 G, G bytes, u64 checksum.
+    // u64 I (= N), u32 input indices[I], the hierarchy (u8 volume, u64 leaf size, u64 K, u32
+    // counts[K], u32 rights[K], u32 order[N]), u64 G, G bytes, u64 checksum.
     REQUIRE(get<std::uint64_t>(bytes, 16) == n);
     const std::size_t points = 113, normals = points + 24 * n, scan = normals + 24 * n;
     const auto m = get<std::uint64_t>(bytes, scan + 16);
@@ -97,9 +98,11 @@ Object_layout object_layout(const std::string& bytes, std::size_t n)
     const auto d = get<std::uint64_t>(bytes, radii_count);
     const std::size_t fit = radii_count + 8 + 8 * std::size_t(d);
     REQUIRE(get<std::uint64_t>(bytes, fit + 1) == n);
-    const std::size_t geodesic_size = fit + 1 + 8 + 4 * n;
+    const std::size_t hierarchy = fit + 1 + 8 + 4 * n;
+    const auto nodes = std::size_t(get<std::uint64_t>(bytes, hierarchy + 9));
+    const std::size_t geodesic_size = hierarchy + 17 + 8 * nodes + 4 * n;
     REQUIRE(geodesic_size + 8 + get<std::uint64_t>(bytes, geodesic_size) + 8 == bytes.size());
-    return {n, 24, 32, 40, points, normals, fit, fit + 1, geodesic_size, geodesic_size + 8};
+    return {n, 24, 32, 40, points, normals, fit, fit + 1, hierarchy, nodes, geodesic_size, geodesic_size + 8};
 }
 
 void require_load_error(const std::string& name, const std::string& bytes, const std::vector<std::string>& keywords)
@@ -132,11 +135,11 @@ TEST_CASE("serialized objects: empty, foreign, other version and byte order", "[
     PCCD::write_geodesic_data(geodesic_path, small_object().graph(), small_object().cpsp());
     require_load_error("geodesic_as_object.pccdobj", read_bytes(geodesic_path), {"not a PCCD object file"});
     require_geodesic_error("object_as_geodesic.pccdgeo", good, {"not a PCCD geodesic file"});
-    for (const std::uint32_t version : {0u, 5u, 0xffffffffu}) {
+    for (const std::uint32_t version : {0u, 6u, 0xffffffffu}) {
         std::string other = good;
         put(other, 8, version);
         require_load_error("version.pccdobj", other,
-                           {"object file format version " + std::to_string(version), "reads versions 1 to 4"});
+                           {"object file format version " + std::to_string(version), "reads versions 1 to 5"});
         reseal(other);
         require_load_error("version.pccdobj", other, {"object file format version " + std::to_string(version)});
     }
@@ -239,6 +242,23 @@ TEST_CASE("serialized objects: inconsistent content behind a valid checksum", "[
                 {"inconsistent content", "domain radius of point 4"});
     crafted("domain_count", [&](std::string& b) { put(b, scan + 24, std::uint64_t(n - 1)); },
             {"inconsistent number of domain radii"});
+    // The hierarchy section: volume, leaf size, node count, and a layout that is not a median-split
+    // tree of the points (an order that is not a permutation, a count off the median, a right child
+    // out of place), each caught before any query could trust it.
+    crafted("volume", [&](std::string& b) { b[at.hierarchy] = char(9); }, {"unknown bounding volume 9"});
+    for (const std::uint64_t leaf : {std::uint64_t(0), std::uint64_t(n + 1)})
+        crafted("leaf_size", [&](std::string& b) { put(b, at.hierarchy + 1, leaf); }, {"invalid hierarchy leaf size"});
+    for (const std::uint64_t nodes : {std::uint64_t(0), std::uint64_t(2 * n), ~std::uint64_t(0)})
+        crafted("nodes", [&](std::string& b) { put(b, at.hierarchy + 9, nodes); }, {"inconsistent number of hierarchy nodes"});
+    const std::size_t counts = at.hierarchy + 17, rights = counts + 4 * at.nodes, order = rights + 4 * at.nodes;
+    crafted("hierarchy_order", [&](std::string& b) { put(b, order + 4, get<std::uint32_t>(b, order)); },
+            {"inconsistent content", "not a permutation"});
+    crafted("hierarchy_count", [&](std::string& b) { put(b, counts + 4, get<std::uint32_t>(b, counts + 4) + 1); },
+            {"inconsistent content", "not split at its median"});
+    crafted("hierarchy_right", [&](std::string& b) { put(b, rights, get<std::uint32_t>(b, rights) + 1); },
+            {"inconsistent content", "not where its left subtree ends"});
+    crafted("hierarchy_leaf", [&](std::string& b) { put(b, rights, std::uint32_t(0)); },
+            {"inconsistent content", "nodes outside the tree"});
     crafted("geodesic_size", [&](std::string& b) { put(b, at.geodesic_size, get<std::uint64_t>(b, at.geodesic_size) + 1); },
             {"inconsistent size of the geodesic section"});
     crafted("geodesic_size_huge", [&](std::string& b) { put(b, at.geodesic_size, ~std::uint64_t(0) - 7); },

@@ -4,10 +4,13 @@
 // also bounded by a slab normal to their direction of least spread, thin on a surface patch. Each
 // point may carry a reach (how far from it its surface can be defined, doc/manual/hierarchy.md) and
 // each node the largest reach of its points; the points and reaches are also stored in hierarchy
-// order, so that a leaf's data is contiguous. The intersection queries use it to restrict their
-// work to the parts of two objects that can touch (overlapping_leaves.h, reach_traversal.h). A
-// built tree can be refitted over new positions of the same points (the hierarchy of a deforming
-// cloud, doc/manual/kinetic.md "Deforming point clouds").
+// order, so that a leaf's data is contiguous. The bounding volume its node-pair tests use is chosen
+// per hierarchy (Bounding_volume: box and slab, box alone, or sphere; doc/manual/hierarchy.md
+// "Bounding volumes"). The intersection queries use it to restrict their work to the parts of two
+// objects that can touch (overlapping_leaves.h, reach_traversal.h). The build runs in parallel on
+// TBB; a built tree can be refitted over new positions of the same points (the hierarchy of a
+// deforming cloud, doc/manual/kinetic.md "Deforming point clouds") and rebuilt from its Layout
+// (how an object file stores it).
 #pragma once
 
 #include <algorithm>
@@ -16,6 +19,7 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -26,8 +30,39 @@
 
 #include <PCCD/Error.h>
 #include <PCCD/internal/finite.h>
+#include <PCCD/internal/parallel.h>
 
 namespace PCCD {
+
+/// The bounding volume whose test prunes the node pairs of a hierarchy traversal
+/// (doc/manual/hierarchy.md, "Bounding volumes"). Every node keeps its axis-aligned box whatever
+/// the volume: the build splits boxes, and the point queries (within_reach(), nearest_point()) and
+/// the flat traversal's regions use them; the volume decides what else a node stores and which test
+/// a pair of nodes gets.
+enum class Bounding_volume : std::uint8_t {
+    /// The box and a slab normal to the points' direction of least spread (Node::slab_normal); a
+    /// pair is pruned by the boxes' separating axes, then by either slab. Measured fastest
+    /// (doc/benchmarks.md "Point cloud hierarchy"). Default.
+    box_and_slab = 0,
+    /// The axis-aligned box alone (no slab is computed).
+    box = 1,
+    /// A bounding sphere per node (Point_cloud_hierarchy::sphere(): the centroid of the node's points,
+    /// or its box centre when that is nearer them all, and the largest distance of a point from it);
+    /// a pair is pruned when the spheres, grown by the margin, are apart. The boxes are not tested
+    /// (unless the other hierarchy of the pair is box-based).
+    sphere = 2,
+};
+
+/// The name of a bounding volume ("box_and_slab", "box", "sphere").
+inline const char* to_string(Bounding_volume v)
+{
+    switch (v) {
+    case Bounding_volume::box_and_slab: return "box_and_slab";
+    case Bounding_volume::box: return "box";
+    case Bounding_volume::sphere: return "sphere";
+    }
+    return "unknown";
+}
 
 /// Options of Point_cloud_hierarchy.
 struct Point_cloud_hierarchy_options {
@@ -35,13 +70,19 @@ struct Point_cloud_hierarchy_options {
     /// that the leaf pairs of two touching objects hug their contact region; measured faster than 16
     /// and 32 for first-hit queries (doc/benchmarks.md "Point cloud hierarchy").
     std::size_t leaf_size = 8;
+    /// The bounding volume of the node-pair tests. Default: box and slab.
+    Bounding_volume volume = Bounding_volume::box_and_slab;
+    /// Worker threads of the build, >= 1 (at most 4096). Unset (default): all available. The tree
+    /// does not depend on it.
+    std::optional<unsigned> threads = std::nullopt;
 };
 
-/// A static AABB tree over the points of a cloud.
+/// A static bounding-volume tree over the points of a cloud.
 ///
 /// Node 0 is the root; nodes are stored in depth-first order, so an inner node's left child follows
 /// it directly. A node covers the points order()[first, first + count). The tree is balanced
-/// (median splits): its height is ceil(log2(N / leaf_size)) + 1 at most.
+/// (median splits: a left child holds half its parent's points, rounded down): its height is
+/// ceil(log2(N / leaf_size)) + 1 at most.
 ///
 /// Immutable after construction; all member functions are const and safe to call concurrently.
 class Point_cloud_hierarchy {
@@ -69,8 +110,26 @@ public:
         double slab_max = std::numeric_limits<double>::infinity();
 
         bool is_leaf() const { return right == no_child; }
-        /// False for a node of a refitted tree (no slab).
+        /// False for a node of a refitted tree, or of a tree whose volume is not box_and_slab.
         bool has_slab() const { return std::isfinite(slab_min); }
+    };
+
+    /// A ball holding a node's points (Bounding_volume::sphere).
+    struct Sphere {
+        Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+        double radius = 0.0;
+    };
+
+    /// The shape of a tree without its geometry: the point order and, per node in depth-first order,
+    /// its point count and right child (no_child for a leaf), with the options it was built with.
+    /// With the same points it determines the whole hierarchy (boxes, reaches, slabs, spheres):
+    /// an object file stores it (doc/manual/surface.md, save and load).
+    struct Layout {
+        std::vector<Index> order;
+        std::vector<Index> counts;
+        std::vector<Index> rights;
+        std::size_t leaf_size = 8;
+        Bounding_volume volume = Bounding_volume::box_and_slab;
     };
 
     /// An empty hierarchy.
@@ -90,47 +149,70 @@ public:
     /// Builds the hierarchy of the 3 x N `points` with a reach per point (`reach(i)` for point i,
     /// finite and >= 0; empty: every reach is 0). Node::reach is the largest reach of a node's points.
     /// \throws Invalid_input as above, or if `reach` is neither empty nor of size N, or holds a value
-    ///         that is not finite or < 0.
+    ///         that is not finite or < 0, or options.threads is 0 or above 4096.
+    /// Complexity: O(N log N) time, in parallel over subtrees and nodes with TBB; O(N) space.
     template <class Derived>
     Point_cloud_hierarchy(const Eigen::MatrixBase<Derived>& points, const Eigen::VectorXd& reach,
                           const Point_cloud_hierarchy_options& options = {})
     {
-        static_assert(Derived::RowsAtCompileTime == 3 || Derived::RowsAtCompileTime == Eigen::Dynamic,
-                      "Point_cloud_hierarchy needs a 3 x N matrix of points");
-        if (points.rows() != 3) throw Invalid_input("point cloud hierarchy: the points must be a 3 x N matrix");
-        const std::size_t n = std::size_t(points.cols());
-        if (n == 0) throw Invalid_input("point cloud hierarchy: the cloud is empty");
-        if (n >= std::size_t(std::numeric_limits<Index>::max()))
-            throw Invalid_input("point cloud hierarchy: too many points (at most 2^32 - 2)");
-        if (options.leaf_size == 0) throw Invalid_input("point cloud hierarchy: leaf_size must be >= 1");
-        const Eigen::Matrix3Xd coordinates = points.template cast<double>();
-        for (Eigen::Index i = 0; i < coordinates.cols(); ++i)
-            if (!internal::all_finite(coordinates.col(i)))
-                throw Invalid_input(internal::concat("point cloud hierarchy: point ", i, " is not finite"));
-        if (reach.size() != 0 && std::size_t(reach.size()) != n)
-            throw Invalid_input(internal::concat("point cloud hierarchy: ", reach.size(), " reaches for ", n, " points"));
-        for (Eigen::Index i = 0; i < reach.size(); ++i)
-            if (!(std::isfinite(reach(i)) && reach(i) >= 0.0))
-                throw Invalid_input(internal::concat("point cloud hierarchy: the reach of point ", i, " (", reach(i),
-                                                     ") must be finite and >= 0"));
+        const Eigen::Matrix3Xd coordinates = checked_points(points, reach, options.leaf_size, options.threads);
+        const std::size_t n = std::size_t(coordinates.cols());
         m_leaf_size = options.leaf_size;
+        m_volume = options.volume;
         m_has_reach = reach.size() != 0;
         m_order.resize(n);
         std::iota(m_order.begin(), m_order.end(), Index(0));
-        m_nodes.reserve(2 * (n / m_leaf_size + 1));
-        build(coordinates, 0, Index(n));
-        // Points and reaches in hierarchy order; node reaches bottom-up (children follow parents).
-        m_ordered.resize(4, Eigen::Index(n));
-        for (std::size_t k = 0; k < n; ++k) {
-            m_ordered.col(Eigen::Index(k)).head<3>() = coordinates.col(m_order[k]);
-            m_ordered(3, Eigen::Index(k)) = reach.size() == 0 ? 0.0 : reach(m_order[k]);
-        }
-        for (std::size_t i = m_nodes.size(); i-- > 0;) {
+        internal::with_threads(options.threads, [&] {
+            m_nodes = build_subtree(coordinates, 0, Index(n), parallel_depth);
+            finish(coordinates, reach);
+        });
+    }
+
+    /// The hierarchy `layout` describes (as layout() returned it, e.g. read from a file) over the
+    /// 3 x N `points` it was built on, with a reach per point as in the constructor above: the same
+    /// tree, boxes, reaches, slabs and spheres as that build, without its splits. Every geometric
+    /// quantity is recomputed from the points, so a layout cannot make a volume miss its points.
+    /// \throws Invalid_input if the layout is not that of a median-split tree over N points (the
+    ///         order a permutation of 0..N-1, each inner node's left child holding half its points
+    ///         rounded down, its right child the rest, the nodes in depth-first order, no leaf above
+    ///         leaf_size points unless they coincide), or as the constructor above.
+    /// Complexity: O(N log N) time (the slabs or spheres), in parallel with TBB; O(N) space.
+    template <class Derived>
+    Point_cloud_hierarchy(const Layout& layout, const Eigen::MatrixBase<Derived>& points, const Eigen::VectorXd& reach,
+                          std::optional<unsigned> threads = std::nullopt)
+    {
+        const Eigen::Matrix3Xd coordinates = checked_points(points, reach, layout.leaf_size, threads);
+        m_leaf_size = layout.leaf_size;
+        m_volume = layout.volume;
+        m_has_reach = reach.size() != 0;
+        check_layout(layout, std::size_t(coordinates.cols()));
+        m_order = layout.order;
+        m_nodes.resize(layout.counts.size());
+        // Ranges top-down (a parent precedes its children), boxes bottom-up.
+        m_nodes[0].count = Index(coordinates.cols());
+        for (std::size_t i = 0; i < m_nodes.size(); ++i) {
             Node& node = m_nodes[i];
-            node.reach = node.is_leaf() ? m_ordered.row(3).segment(node.first, node.count).maxCoeff()
-                                        : std::max(m_nodes[left(Index(i))].reach, m_nodes[node.right].reach);
+            node.right = layout.rights[i];
+            if (node.is_leaf()) continue;
+            Node& l = m_nodes[i + 1];
+            Node& r = m_nodes[node.right];
+            l.first = node.first, l.count = node.count / 2;
+            r.first = node.first + l.count, r.count = node.count - l.count;
         }
-        compute_slabs();
+        internal::with_threads(threads, [&] {
+            for (std::size_t i = m_nodes.size(); i-- > 0;) {
+                Node& node = m_nodes[i];
+                if (node.is_leaf()) {
+                    for (Index k = node.first; k < node.first + node.count; ++k) node.box.extend(coordinates.col(m_order[k]));
+                    if (node.count > m_leaf_size && node.box.sizes().maxCoeff() > 0.0)
+                        throw Invalid_input(internal::concat("point cloud hierarchy layout: leaf ", i, " holds ", node.count,
+                                                             " points that do not coincide (leaf size ", m_leaf_size, ")"));
+                } else {
+                    node.box = m_nodes[i + 1].box.merged(m_nodes[node.right].box);
+                }
+            }
+            finish(coordinates, reach);
+        });
     }
 
     /// The tree of `topology` (same nodes, same point order, same leaf size) over new positions of
@@ -140,7 +222,8 @@ public:
     /// (doc/manual/kinetic.md, "Deforming point clouds"): the boxes stay exact, only their
     /// tightness depends on how far the points moved relative to each other since `topology` was
     /// built. The refitted nodes have no slabs (Node::slab_normal zero): recomputing them would
-    /// cost O(N log N) per refit.
+    /// cost O(N log N) per refit. A sphere tree gets new spheres: a leaf's from its points, an inner
+    /// node's the smallest ball holding its children's (looser than a build's, still O(N)).
     /// \throws Invalid_input if `topology` is empty, the number of points differs from its size, a
     ///         coordinate is not finite, or `reach` is neither empty nor of size N or holds a value
     ///         that is not finite or < 0.
@@ -149,7 +232,7 @@ public:
     Point_cloud_hierarchy(const Point_cloud_hierarchy& topology, const Eigen::MatrixBase<Derived>& points,
                           const Eigen::VectorXd& reach)
         : m_nodes(topology.m_nodes), m_order(topology.m_order), m_leaf_size(topology.m_leaf_size),
-          m_has_reach(reach.size() != 0)
+          m_volume(topology.m_volume), m_has_reach(reach.size() != 0)
     {
         if (topology.empty()) throw Invalid_input("point cloud hierarchy: refit of an empty hierarchy");
         if (points.rows() != 3 || std::size_t(points.cols()) != m_order.size())
@@ -190,6 +273,14 @@ public:
                 node.reach = std::max(a.reach, b.reach);
             }
         }
+        if (m_volume == Bounding_volume::sphere) {
+            m_spheres.resize(m_nodes.size());
+            for (std::size_t i = m_nodes.size(); i-- > 0;) {
+                const Node& node = m_nodes[i];
+                m_spheres[i] = node.is_leaf() ? sphere_of_points(node, centroid(node))
+                                              : enclosing(m_spheres[i + 1], m_spheres[node.right]);
+            }
+        }
     }
 
     /// \name Access
@@ -210,6 +301,21 @@ public:
     /// Position (rows 0-2, the cloud's local frame) and reach (row 3) of the k-th point in
     /// hierarchy order, i.e. of point order()[k]: a node's points are the columns [first, first + count).
     const Eigen::Matrix4Xd& ordered_points() const { return m_ordered; }
+    /// The bounding volume of the node-pair tests.
+    Bounding_volume volume() const { return m_volume; }
+    /// True when every node has a sphere (volume() == Bounding_volume::sphere).
+    bool has_spheres() const { return !m_spheres.empty(); }
+    /// The bounding sphere of node i (local coordinates). \pre has_spheres()
+    const Sphere& sphere(Index i) const { return m_spheres[i]; }
+    /// The tree's shape, from which the constructor taking a Layout rebuilds it over the same points.
+    Layout layout() const
+    {
+        Layout l{.order = m_order, .counts = {}, .rights = {}, .leaf_size = m_leaf_size, .volume = m_volume};
+        l.counts.reserve(m_nodes.size());
+        l.rights.reserve(m_nodes.size());
+        for (const Node& node : m_nodes) l.counts.push_back(node.count), l.rights.push_back(node.right);
+        return l;
+    }
     std::size_t size() const { return m_order.size(); }
     /// True when the hierarchy was built with reaches (otherwise every reach is 0).
     bool has_reach() const { return m_has_reach; }
@@ -220,24 +326,101 @@ public:
     std::size_t memory_bytes() const
     {
         return m_nodes.capacity() * sizeof(Node) + m_order.capacity() * sizeof(Index) +
-               std::size_t(m_ordered.size()) * sizeof(double);
+               std::size_t(m_ordered.size()) * sizeof(double) + m_spheres.capacity() * sizeof(Sphere);
     }
     /// @}
 
 private:
-    Index build(const Eigen::Matrix3Xd& points, Index first, Index last)
+    /// Subtrees of more points than this are built in parallel (down to parallel_depth levels).
+    static constexpr Index parallel_points = 1u << 14;
+    static constexpr int parallel_depth = 8;
+
+    /// The points as doubles, checked with the reaches and options (see the constructors).
+    template <class Derived>
+    static Eigen::Matrix3Xd checked_points(const Eigen::MatrixBase<Derived>& points, const Eigen::VectorXd& reach,
+                                           std::size_t leaf_size, const std::optional<unsigned>& threads)
     {
-        const Index id = Index(m_nodes.size());
-        m_nodes.push_back(Node{});
+        static_assert(Derived::RowsAtCompileTime == 3 || Derived::RowsAtCompileTime == Eigen::Dynamic,
+                      "Point_cloud_hierarchy needs a 3 x N matrix of points");
+        if (points.rows() != 3) throw Invalid_input("point cloud hierarchy: the points must be a 3 x N matrix");
+        const std::size_t n = std::size_t(points.cols());
+        if (n == 0) throw Invalid_input("point cloud hierarchy: the cloud is empty");
+        if (n >= std::size_t(std::numeric_limits<Index>::max()))
+            throw Invalid_input("point cloud hierarchy: too many points (at most 2^32 - 2)");
+        if (leaf_size == 0) throw Invalid_input("point cloud hierarchy: leaf_size must be >= 1");
+        internal::check_threads(threads, "point cloud hierarchy: threads");
+        Eigen::Matrix3Xd coordinates = points.template cast<double>();
+        for (Eigen::Index i = 0; i < coordinates.cols(); ++i)
+            if (!internal::all_finite(coordinates.col(i)))
+                throw Invalid_input(internal::concat("point cloud hierarchy: point ", i, " is not finite"));
+        if (reach.size() != 0 && std::size_t(reach.size()) != n)
+            throw Invalid_input(internal::concat("point cloud hierarchy: ", reach.size(), " reaches for ", n, " points"));
+        for (Eigen::Index i = 0; i < reach.size(); ++i)
+            if (!(std::isfinite(reach(i)) && reach(i) >= 0.0))
+                throw Invalid_input(internal::concat("point cloud hierarchy: the reach of point ", i, " (", reach(i),
+                                                     ") must be finite and >= 0"));
+        return coordinates;
+    }
+
+    /// The nodes of the subtree over m_order[first, last), in depth-first order with child indices
+    /// relative to the subtree's root. Above parallel_points points (and while `depth` > 0) the two
+    /// halves are built in parallel; the tree does not depend on it (the same splits either way).
+    std::vector<Node> build_subtree(const Eigen::Matrix3Xd& points, Index first, Index last, int depth)
+    {
+        if (depth <= 0 || last - first <= parallel_points) {
+            std::vector<Node> nodes;
+            nodes.reserve(2 * ((last - first) / m_leaf_size + 1));
+            build(points, first, last, nodes);
+            return nodes;
+        }
+        Node root;
+        const Index middle = split(points, first, last, root);
+        if (middle == last) return {root};
+        std::vector<Node> left_nodes, right_nodes;
+        internal::parallel_invoke([&] { left_nodes = build_subtree(points, first, middle, depth - 1); },
+                                  [&] { right_nodes = build_subtree(points, middle, last, depth - 1); });
+        std::vector<Node> nodes;
+        nodes.reserve(1 + left_nodes.size() + right_nodes.size());
+        root.right = Index(1 + left_nodes.size());
+        nodes.push_back(root);
+        for (const std::vector<Node>* part : {&left_nodes, &right_nodes}) {
+            const Index offset = Index(nodes.size());
+            for (Node node : *part) {
+                if (!node.is_leaf()) node.right += offset;
+                nodes.push_back(node);
+            }
+        }
+        return nodes;
+    }
+
+    /// Appends the subtree over m_order[first, last) to `nodes` (absolute indices). Returns its root.
+    Index build(const Eigen::Matrix3Xd& points, Index first, Index last, std::vector<Node>& nodes)
+    {
+        const Index id = Index(nodes.size());
+        nodes.push_back(Node{});
+        Node node;
+        const Index middle = split(points, first, last, node);
+        nodes[id] = node;
+        if (middle == last) return id;
+        build(points, first, middle, nodes);
+        nodes[id].right = build(points, middle, last, nodes);
+        return id;
+    }
+
+    /// Sets `node`'s range and box over m_order[first, last) and, unless it is a leaf (at most
+    /// leaf_size points, or all coincide), splits the range at its median along the box's longest
+    /// side. Returns the start of the right half (`last` for a leaf).
+    Index split(const Eigen::Matrix3Xd& points, Index first, Index last, Node& node)
+    {
         Eigen::AlignedBox3d box;
         for (Index k = first; k < last; ++k) box.extend(points.col(m_order[k]));
-        m_nodes[id].box = box;
-        m_nodes[id].first = first;
-        m_nodes[id].count = last - first;
-        if (std::size_t(last - first) <= m_leaf_size) return id;
+        node.box = box;
+        node.first = first;
+        node.count = last - first;
+        if (std::size_t(last - first) <= m_leaf_size) return last;
         Eigen::Index axis = 0;
         box.sizes().maxCoeff(&axis);
-        if (!(box.sizes()(axis) > 0.0)) return id; // all points coincide: one leaf, whatever its size
+        if (!(box.sizes()(axis) > 0.0)) return last; // all points coincide: one leaf, whatever its size
         const Index middle = first + (last - first) / 2;
         // Ties broken by index so that the tree does not depend on the standard library's algorithm.
         std::nth_element(m_order.begin() + first, m_order.begin() + middle, m_order.begin() + last,
@@ -245,14 +428,65 @@ private:
                              const double ca = points(axis, a), cb = points(axis, b);
                              return ca < cb || (ca == cb && a < b);
                          });
-        build(points, first, middle);
-        m_nodes[id].right = build(points, middle, last);
-        return id;
+        return middle;
+    }
+
+    /// Throws unless `layout` is that of a median-split tree over n points (see its constructor).
+    static void check_layout(const Layout& layout, std::size_t n)
+    {
+        const auto fail = [](auto&&... what) {
+            throw Invalid_input(internal::concat("point cloud hierarchy layout: ", what...));
+        };
+        if (layout.order.size() != n) fail(layout.order.size(), " indices in the order for ", n, " points");
+        std::vector<bool> seen(n, false);
+        for (const Index k : layout.order) {
+            if (k >= n || seen[k]) fail("the order is not a permutation of the points (index ", k, ")");
+            seen[k] = true;
+        }
+        const std::size_t m = layout.counts.size();
+        if (m == 0 || layout.rights.size() != m) fail(m, " node counts and ", layout.rights.size(), " right children");
+        if (layout.counts[0] != n) fail("the root holds ", layout.counts[0], " of ", n, " points");
+        if (int(layout.volume) > int(Bounding_volume::sphere)) fail("unknown bounding volume ", int(layout.volume));
+        if (layout.leaf_size == 0) fail("leaf_size 0");
+        // end[i]: one past the last node of i's subtree; nodes are depth-first, children after parents.
+        std::vector<std::size_t> end(m);
+        for (std::size_t i = m; i-- > 0;) {
+            const Index r = layout.rights[i], c = layout.counts[i];
+            if (r == no_child) {
+                end[i] = i + 1;
+                continue;
+            }
+            if (!(r > i + 1 && r < m) || end[i + 1] != r)
+                fail("node ", i, ": right child ", r, " is not where its left subtree ends");
+            if (c <= layout.leaf_size || layout.counts[i + 1] != c / 2 || layout.counts[r] != c - c / 2)
+                fail("node ", i, " of ", c, " points is not split at its median");
+            end[i] = end[r];
+        }
+        if (end[0] != m) fail(m - end[0], " nodes outside the tree");
+    }
+
+    /// Points and reaches in hierarchy order, node reaches, and the slabs or spheres the volume asks for.
+    void finish(const Eigen::Matrix3Xd& coordinates, const Eigen::VectorXd& reach)
+    {
+        const std::size_t n = m_order.size();
+        m_ordered.resize(4, Eigen::Index(n));
+        for (std::size_t k = 0; k < n; ++k) {
+            m_ordered.col(Eigen::Index(k)).head<3>() = coordinates.col(m_order[k]);
+            m_ordered(3, Eigen::Index(k)) = reach.size() == 0 ? 0.0 : reach(m_order[k]);
+        }
+        // Node reaches bottom-up (children follow parents).
+        for (std::size_t i = m_nodes.size(); i-- > 0;) {
+            Node& node = m_nodes[i];
+            node.reach = node.is_leaf() ? m_ordered.row(3).segment(node.first, node.count).maxCoeff()
+                                        : std::max(m_nodes[left(Index(i))].reach, m_nodes[node.right].reach);
+        }
+        if (m_volume == Bounding_volume::box_and_slab) compute_slabs();
+        if (m_volume == Bounding_volume::sphere) compute_spheres();
     }
 
     /// The slab of every node: the points' second moments are summed bottom-up (relative to the
     /// root box's centre), the normal is their covariance's smallest eigenvector, and the interval
-    /// is taken over the node's points. O(N log N).
+    /// is taken over the node's points. O(N log N), in parallel over nodes.
     void compute_slabs()
     {
         const Eigen::Vector3d origin = m_nodes.front().box.center();
@@ -277,25 +511,69 @@ private:
                 m.squares = a.squares + b.squares;
             }
         }
-        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
-        for (std::size_t i = 0; i < m_nodes.size(); ++i) {
-            Node& node = m_nodes[i];
-            const Eigen::Vector3d mean = moments[i].sum / double(node.count);
-            const Eigen::Matrix3d covariance = moments[i].squares / double(node.count) - mean * mean.transpose();
-            solver.computeDirect(covariance);
-            Eigen::Vector3d normal = solver.eigenvectors().col(0);
-            if (solver.info() != Eigen::Success || !internal::all_finite(normal) || !(normal.norm() > 0.5)) continue;
-            normal.normalize();
-            double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-            for (Index k = node.first; k < node.first + node.count; ++k) {
-                const double d = normal.dot(m_ordered.col(k).head<3>());
-                lo = std::min(lo, d);
-                hi = std::max(hi, d);
+        internal::parallel_for_ranges(m_nodes.size(), 256, [&](std::size_t begin, std::size_t end) {
+            Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+            for (std::size_t i = begin; i < end; ++i) {
+                Node& node = m_nodes[i];
+                const Eigen::Vector3d mean = moments[i].sum / double(node.count);
+                const Eigen::Matrix3d covariance = moments[i].squares / double(node.count) - mean * mean.transpose();
+                solver.computeDirect(covariance);
+                Eigen::Vector3d normal = solver.eigenvectors().col(0);
+                if (solver.info() != Eigen::Success || !internal::all_finite(normal) || !(normal.norm() > 0.5)) continue;
+                normal.normalize();
+                double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+                for (Index k = node.first; k < node.first + node.count; ++k) {
+                    const double d = normal.dot(m_ordered.col(k).head<3>());
+                    lo = std::min(lo, d);
+                    hi = std::max(hi, d);
+                }
+                node.slab_normal = normal;
+                node.slab_min = lo;
+                node.slab_max = hi;
             }
-            node.slab_normal = normal;
-            node.slab_min = lo;
-            node.slab_max = hi;
-        }
+        });
+    }
+
+    /// The sphere of every node: centred at the centroid of its points or at its box centre,
+    /// whichever gives the smaller ball holding them. O(N log N), in parallel over nodes.
+    void compute_spheres()
+    {
+        m_spheres.assign(m_nodes.size(), Sphere{});
+        internal::parallel_for_ranges(m_nodes.size(), 256, [&](std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) {
+                const Node& node = m_nodes[i];
+                const Sphere a = sphere_of_points(node, centroid(node)), b = sphere_of_points(node, node.box.center());
+                m_spheres[i] = a.radius <= b.radius ? a : b;
+            }
+        });
+    }
+
+    Eigen::Vector3d centroid(const Node& node) const
+    {
+        return m_ordered.middleCols(node.first, node.count).template topRows<3>().rowwise().mean();
+    }
+
+    /// The smallest ball centred at `centre` that holds the node's points.
+    Sphere sphere_of_points(const Node& node, const Eigen::Vector3d& centre) const
+    {
+        double largest = 0.0;
+        for (Index k = node.first; k < node.first + node.count; ++k)
+            largest = std::max(largest, (m_ordered.col(k).head<3>() - centre).squaredNorm());
+        // A few ulps more, so that rounding in a distance computed elsewhere cannot put a point outside.
+        return {centre, std::sqrt(largest) * (1.0 + 8.0 * std::numeric_limits<double>::epsilon())};
+    }
+
+    /// The smallest ball holding the balls a and b.
+    static Sphere enclosing(const Sphere& a, const Sphere& b)
+    {
+        const Eigen::Vector3d d = b.centre - a.centre;
+        const double distance = d.norm();
+        if (distance + b.radius <= a.radius) return a;
+        if (distance + a.radius <= b.radius) return b;
+        const double radius = 0.5 * (distance + a.radius + b.radius);
+        // Rounding: the radius is grown by a few ulps of the scale so that both balls stay inside.
+        const double scale = distance + a.radius + b.radius + a.centre.cwiseAbs().maxCoeff();
+        return {a.centre + ((radius - a.radius) / distance) * d, radius + 4.0 * std::numeric_limits<double>::epsilon() * scale};
     }
 
     std::size_t height_of(Index i) const
@@ -307,7 +585,9 @@ private:
     std::vector<Node> m_nodes;
     std::vector<Index> m_order;
     Eigen::Matrix4Xd m_ordered;
+    std::vector<Sphere> m_spheres;
     std::size_t m_leaf_size = 8;
+    Bounding_volume m_volume = Bounding_volume::box_and_slab;
     bool m_has_reach = false;
 };
 

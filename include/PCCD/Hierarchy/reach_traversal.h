@@ -4,7 +4,8 @@
 // reach of the other, and whether two clouds have a pair of points closer than the sum of their
 // reaches. The implicit surface of a cloud is defined only within the reach of its points, so these
 // tests bound where f is defined and where two surfaces can share a zero, without evaluating f.
-// Boxes grown by a node's largest reach, and the nodes' slabs, prune node pairs; leaves compare points.
+// The hierarchies' bounding volumes (boxes, slabs or spheres, Bounding_volume), grown by a node's
+// largest reach, prune node pairs; leaves compare points.
 #pragma once
 
 #include <algorithm>
@@ -90,12 +91,28 @@ inline std::pair<double, double> node_extent_along(const Point_cloud_hierarchy::
 }
 
 /// Node `ns` of s as seen from t's frame: its box centre, its slab normal and the shift of its
-/// slab's interval (a node pair's test needs them; a walk meets each node in several pairs).
+/// slab's interval, its sphere's centre (a node pair's test needs them; a walk meets each node in
+/// several pairs).
 struct Mapped_node {
     Point_cloud_hierarchy::Index node = std::numeric_limits<Point_cloud_hierarchy::Index>::max();
     Eigen::Vector3d centre;
     Eigen::Vector3d slab_normal;
     double slab_shift = 0.0;
+    Eigen::Vector3d sphere_centre;
+};
+
+/// Which tests a traversal of s against t applies to its node pairs: the boxes' separating axes
+/// unless both hierarchies use spheres, the spheres when both have them, and the slabs of the
+/// nodes that have one (a box_and_slab hierarchy's, not refitted).
+struct Pair_tests {
+    bool boxes;
+    bool spheres;
+
+    Pair_tests(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t)
+        : boxes(!(s.volume() == Bounding_volume::sphere && t.volume() == Bounding_volume::sphere)),
+          spheres(s.has_spheres() && t.has_spheres())
+    {
+    }
 };
 
 /// Whether node `ns` of s (seen from t's frame as `mapped`; r the rotation of the motion) and node
@@ -227,13 +244,16 @@ inline std::pair<std::size_t, double> descend_to_near_point(const Point_cloud_hi
     return best;
 }
 
-/// Calls `visit(leaf_s, leaf_t)` for every pair of leaves whose boxes may hold a point of s within
-/// the reach (per `rule_t`) of a point of t: s's box mapped by `s_to_t`, t's box grown by its
-/// node's largest reach (`either`: s's box grown by s's reach or t's by t's, i.e. pairs where a
+/// Calls `visit(leaf_s, leaf_t)` for every pair of leaves whose bounding volumes may hold a point of
+/// s within the reach (per `rule_t`) of a point of t: s's box mapped by `s_to_t`, t's box grown by
+/// its node's largest reach (`either`: s's box grown by s's reach or t's by t's, i.e. pairs where a
 /// point of either leaf may lie within the reach of the other's: the margin is the larger reach, not
 /// the sum). A node pair is also pruned when either node's slab (Point_cloud_hierarchy::Node)
 /// separates it from the other node's box by more than the margin: a surface's slabs are thin, so
-/// two patches whose boxes overlap without the patches coming close are pruned early. Depth-first:
+/// two patches whose boxes overlap without the patches coming close are pruned early. Which tests
+/// run depends on the two hierarchies' Bounding_volume: the boxes unless both are sphere trees,
+/// their spheres (grown by the margin: pruned when farther apart than the two radii and the margin)
+/// when both are, the slabs where the nodes have them. Depth-first:
 /// a pair of inner nodes is replaced by its four child pairs at once (12 % faster first-hit queries
 /// on the coarse models than descending one node at a time, doc/benchmarks.md), a pair with a leaf
 /// by the other node's two children; with `closest_first` each node's child whose box centre lies
@@ -259,6 +279,7 @@ Reach_counters for_each_leaf_pair_within_reach(const Point_cloud_hierarchy& s, c
     stack.emplace_back(0, 0);
     // The nodes of s mapped lately (each appears in several pairs), by node index modulo 64.
     std::array<internal::Mapped_node, 64> mapped_nodes;
+    const internal::Pair_tests tests(s, t);
     while (!stack.empty()) {
         const auto [i, j] = stack.back();
         stack.pop_back();
@@ -272,14 +293,19 @@ Reach_counters for_each_leaf_pair_within_reach(const Point_cloud_hierarchy& s, c
             mapped.centre = s_to_t.transform_point(ns.box.center());
             mapped.slab_normal = r * ns.slab_normal;
             mapped.slab_shift = mapped.slab_normal.dot(s_to_t.translation());
+            if (tests.spheres) mapped.sphere_centre = s_to_t.transform_point(s.sphere(i).centre);
         }
         const Eigen::Vector3d& centre_s = mapped.centre;
         const double ms = rule_s(ns.reach), mt = rule_t(nt.reach);
-        if (!internal::grown_boxes_may_overlap(ns.box, r, abs_r, centre_s, either ? 0.0 : ms, nt.box,
-                                               either ? std::max(ms, mt) : mt))
+        if (tests.boxes && !internal::grown_boxes_may_overlap(ns.box, r, abs_r, centre_s, either ? 0.0 : ms, nt.box,
+                                                              either ? std::max(ms, mt) : mt))
             continue;
-        if (!internal::slabs_may_overlap(ns, mapped, r, s_to_t.translation(), nt, either ? std::max(ms, mt) : ms + mt))
-            continue;
+        const double margin = either ? std::max(ms, mt) : ms + mt;
+        if (tests.spheres) {
+            const double apart = s.sphere(i).radius + t.sphere(j).radius + margin;
+            if ((mapped.sphere_centre - t.sphere(j).centre).squaredNorm() > apart * apart) continue;
+        }
+        if (!internal::slabs_may_overlap(ns, mapped, r, s_to_t.translation(), nt, margin)) continue;
         if (ns.is_leaf() && nt.is_leaf()) {
             ++counters.leaf_pairs;
             observer.leaf_pair(i, j);

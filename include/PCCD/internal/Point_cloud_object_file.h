@@ -95,19 +95,46 @@ inline void read_input_indices(Binary_reader& in, const Scan_estimate& scan, std
     }
 }
 
+/// The hierarchy section of an object file (format version >= 5): the layout of the object's
+/// hierarchy (Point_cloud_hierarchy::Layout) over n points. Checked for sizes and values here; its
+/// shape is checked when the hierarchy is rebuilt from it.
+inline Point_cloud_hierarchy::Layout read_hierarchy_section(Binary_reader& in, std::uint64_t n)
+{
+    Point_cloud_hierarchy::Layout layout;
+    const auto volume = in.get<std::uint8_t>();
+    if (volume > std::uint8_t(Bounding_volume::sphere)) in.fail(concat("unknown bounding volume ", int(volume)));
+    layout.volume = Bounding_volume(volume);
+    const auto leaf_size = in.get<std::uint64_t>();
+    if (leaf_size == 0 || leaf_size > n) in.fail(concat("invalid hierarchy leaf size ", leaf_size));
+    layout.leaf_size = std::size_t(leaf_size);
+    const auto nodes = in.get<std::uint64_t>();
+    if (nodes == 0 || nodes >= 2 * n || in.remaining() / (2 * sizeof(std::uint32_t)) < nodes)
+        in.fail(concat("inconsistent number of hierarchy nodes ", nodes, " for ", n, " points"));
+    layout.counts.resize(std::size_t(nodes));
+    layout.rights.resize(std::size_t(nodes));
+    layout.order.resize(std::size_t(n));
+    in.read(layout.counts.data(), sizeof(std::uint32_t) * layout.counts.size());
+    in.read(layout.rights.data(), sizeof(std::uint32_t) * layout.rights.size());
+    in.read(layout.order.data(), sizeof(std::uint32_t) * layout.order.size());
+    return layout;
+}
+
 } // namespace internal
 
-// File format (version 4, little-endian whatever the host, with a byte-order mark, no padding):
+// File format (version 5, little-endian whatever the host, with a byte-order mark, no padding):
 //   magic "PCCDOBJ\0" | u32 version | u32 byte-order mark | u64 N | f64 sampling radius
 //   f64 bandwidth h | f64 theta_eps | u8 normals given | u64 flipped, components, unoriented
 //   f64 timings[5] | f64 points[3N] | f64 normals[3N]
 //   | f64 noise | u64 input points | u64 M | u32 outliers[M] | u64 D (0 or N) | f64 domain radii[D]
 //   | u8 surface fit (Surface_fit) | u64 I (N) | u32 input indices[I]
+//   | u8 bounding volume | u64 leaf size | u64 M | u32 node counts[M] | u32 right children[M]
+//     | u32 hierarchy order[N]      (the hierarchy's Layout)
 //   | u64 G | G bytes: a geodesic file
 //   | u64 checksum (FNV-1a over 64-bit words of everything before it)
 // Version 1 files (without the scan section) still load: no outliers, noise 0, and the domain of
 // the default Surface_domain_options; versions 1 and 2 (without the fit) get the plane fit they
-// were made with; versions 1 to 3 (points in the order given) get the identity as input indices.
+// were made with; versions 1 to 3 (points in the order given) get the identity as input indices;
+// versions 1 to 4 (without the hierarchy) get one built with the options load() is given.
 template <PointCloudKernel K>
 void Point_cloud_object<K>::save(const std::string& path) const
 {
@@ -142,6 +169,13 @@ void Point_cloud_object<K>::save(const std::string& path) const
     out.put(std::uint8_t(surface().fit()));
     out.put(std::uint64_t(d.input_index.size()));
     out.write(d.input_index.data(), sizeof(std::uint32_t) * d.input_index.size());
+    const Point_cloud_hierarchy::Layout layout = d.hierarchy.layout();
+    out.put(std::uint8_t(layout.volume));
+    out.put(std::uint64_t(layout.leaf_size));
+    out.put(std::uint64_t(layout.counts.size()));
+    out.write(layout.counts.data(), sizeof(std::uint32_t) * layout.counts.size());
+    out.write(layout.rights.data(), sizeof(std::uint32_t) * layout.rights.size());
+    out.write(layout.order.data(), sizeof(std::uint32_t) * layout.order.size());
     out.put(std::uint64_t(geodesic.size()));
     out.write(geodesic.data(), geodesic.size());
     out.finish();
@@ -154,8 +188,19 @@ void Point_cloud_object<K>::save(const std::string& path) const
 }
 
 template <PointCloudKernel K>
-Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path,
-                                                 const Point_cloud_hierarchy_options& hierarchy)
+Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path)
+{
+    return load_file(path, nullptr);
+}
+
+template <PointCloudKernel K>
+Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path, const Point_cloud_hierarchy_options& hierarchy)
+{
+    return load_file(path, &hierarchy);
+}
+
+template <PointCloudKernel K>
+Point_cloud_object<K> Point_cloud_object<K>::load_file(const std::string& path, const Point_cloud_hierarchy_options* hierarchy)
 {
     const std::string bytes = internal::read_binary_file(path);
     internal::Binary_reader in(bytes, path);
@@ -194,6 +239,13 @@ Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path,
     } else {
         std::iota(input_index.begin(), input_index.end(), std::uint32_t(0));
     }
+    std::optional<Point_cloud_hierarchy::Layout> layout;
+    if (version >= 5) layout = internal::read_hierarchy_section(in, n);
+    // The stored tree serves unless the caller asks for another leaf size or volume.
+    Point_cloud_hierarchy_options hierarchy_options = hierarchy ? *hierarchy : Point_cloud_hierarchy_options{};
+    if (layout && !hierarchy) hierarchy_options.leaf_size = layout->leaf_size, hierarchy_options.volume = layout->volume;
+    if (layout && (layout->leaf_size != hierarchy_options.leaf_size || layout->volume != hierarchy_options.volume))
+        layout.reset();
     const auto geodesic_size = in.get<std::uint64_t>();
     if (in.remaining() < sizeof(std::uint64_t) || in.remaining() - sizeof(std::uint64_t) != geodesic_size)
         in.fail("inconsistent size of the geodesic section");
@@ -216,7 +268,8 @@ Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path,
         return Point_cloud_object(std::make_shared<const Data>(
             make_data(std::move(cloud), std::move(graph), std::move(cpsp), r, weight, std::move(normals),
                       std::move(*domain), orientation, given, std::move(scan), timings,
-                      Point_cloud_object_options{.surface_fit = fit, .hierarchy = hierarchy}, std::move(input_index))));
+                      Point_cloud_object_options{.surface_fit = fit, .hierarchy = hierarchy_options}, std::move(input_index),
+                      layout ? &*layout : nullptr)));
     } catch (const File_error&) {
         throw;
     } catch (const Invalid_input& e) {

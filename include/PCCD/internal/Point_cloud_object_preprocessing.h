@@ -22,7 +22,8 @@ auto Point_cloud_object<K>::make_data(Point_cloud<K> cloud, std::shared_ptr<cons
                                       const Gaussian_weight& weight, Eigen::Matrix3Xd normals, Eigen::VectorXd domain,
                                       Orientation_report orientation, bool normals_given, Scan_estimate scan,
                                       Preprocessing_times timings, const Point_cloud_object_options& options,
-                                      std::vector<std::uint32_t> input_index) -> Data
+                                      std::vector<std::uint32_t> input_index,
+                                      const Point_cloud_hierarchy::Layout* layout) -> Data
 {
     // The hierarchy's reach of a point is its domain radius: f is defined only that close to it
     // (doc/manual/hierarchy.md). Without a domain the hierarchy has no reaches (queries walk it flat).
@@ -31,7 +32,8 @@ auto Point_cloud_object<K>::make_data(Point_cloud<K> cloud, std::shared_ptr<cons
     Euclidean_surface euclidean(Euclidean_distance<K>(cloud), weight, std::move(normals), std::move(domain),
                                 options.surface_fit);
     Stage stage(options, Preprocessing_stage::hierarchy, cloud.size());
-    Point_cloud_hierarchy hierarchy(cloud.coordinates(), reach, options.hierarchy);
+    Point_cloud_hierarchy hierarchy = layout ? Point_cloud_hierarchy(*layout, cloud.coordinates(), reach, options.hierarchy.threads)
+                                             : Point_cloud_hierarchy(cloud.coordinates(), reach, options.hierarchy);
     timings.hierarchy = stage.finish();
     return Data{std::move(cloud),       std::move(graph),     std::move(cpsp),
                 sampling_radius,        orientation,          normals_given,

@@ -1,6 +1,6 @@
-// PCCD/internal/parallel.h -- the two parallel loops PCCD's preprocessing needs (doc/design.md,
-// "Beyond one core"): an unordered per-index loop and an ordered block pipeline whose output is
-// consumed in index order. With PCCD_HAS_TBB they run on TBB (inside an arena limited to the
+// PCCD/internal/parallel.h -- the parallel patterns PCCD's preprocessing needs (doc/design.md,
+// "Beyond one core"): an unordered per-index loop, an ordered block pipeline whose output is
+// consumed in index order, and two tasks at once (the halves of a hierarchy's build). With PCCD_HAS_TBB they run on TBB (inside an arena limited to the
 // requested number of threads); without it they run sequentially. Every caller produces results
 // that do not depend on the schedule, so both builds and every thread count give identical output.
 #pragma once
@@ -16,6 +16,7 @@
 #include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/enumerable_thread_specific.h>
 #include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/parallel_invoke.h>
 #include <oneapi/tbb/parallel_pipeline.h>
 #include <oneapi/tbb/task_arena.h>
 #endif
@@ -91,6 +92,19 @@ void parallel_for_ranges(std::size_t n, std::size_t grain, const Body& body)
 #else
     static_cast<void>(grain);
     if (n > 0) body(std::size_t(0), n);
+#endif
+}
+
+/// Runs `first()` and `second()`, in parallel when TBB is on (sequentially, in that order, without).
+/// Call it inside with_threads() to limit the thread count.
+template <class First, class Second>
+void parallel_invoke(const First& first, const Second& second)
+{
+#ifdef PCCD_HAS_TBB
+    oneapi::tbb::parallel_invoke(first, second);
+#else
+    first();
+    second();
 #endif
 }
 
