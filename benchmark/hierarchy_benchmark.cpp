@@ -5,12 +5,14 @@
 //
 //   hierarchy_benchmark [--models bunny00.off,elephant.off,eight.off] [--points 30000]
 //                       [--rotations 50] [--repetitions 3] [--seed 1]
-//                       [--traversals flat,depth_first,likelihood] [--csv OUT]
+//                       [--traversals flat,depth_first,likelihood] [--volumes box_and_slab,box,sphere]
+//                       [--csv OUT]
 //                       [--budgets 5,10,20,50,100 --budget-csv OUT]
 //
 // Peak memory (getrusage) is printed after each model's preprocessing. Per model: the mesh is normalized into [-1, 1]^3, FCL's OBBRSS hierarchy is built on it, and a
 // cloud of --points points is sampled by area and preprocessed with default options. Per pose:
-// FCL's collide() and do_intersect() per traversal, each the median of --repetitions runs, on this
+// FCL's collide() and do_intersect() per traversal (the walked ones once per bounding volume of
+// --volumes, each volume's object preprocessed alike), each the median of --repetitions runs, on this
 // thread's CPU clock (the machine is shared; wall time is noisier). Printed per model: mean and
 // median per distance, mean over d in [0, 3] and over the near misses d in [1, 2.25], their ratio to
 // FCL's, p99, and how often each traversal's verdict differs from the flat traversal's and from FCL's.
@@ -49,6 +51,7 @@ struct Arguments {
     int repetitions = 3;
     std::uint64_t seed = 1;
     std::vector<std::string> traversals{"flat", "depth_first", "likelihood"};
+    std::vector<std::string> volumes{"box_and_slab"};
     std::string csv;
     std::vector<double> budgets; // time budgets in us for the budget sweep (empty: none)
     std::string budget_csv;
@@ -76,6 +79,7 @@ Arguments parse(int argc, char** argv)
         else if (key == "--repetitions") a.repetitions = std::stoi(value);
         else if (key == "--seed") a.seed = std::stoull(value);
         else if (key == "--traversals") a.traversals = value == "none" ? std::vector<std::string>{} : split(value);
+        else if (key == "--volumes") a.volumes = split(value);
         else if (key == "--csv") a.csv = value;
         else if (key == "--budgets") {
             for (const auto& item : split(value)) a.budgets.push_back(std::stod(item));
@@ -93,6 +97,13 @@ PCCD::Traversal traversal_of(const std::string& name)
     if (name == "depth_first") return PCCD::Traversal::depth_first;
     if (name == "likelihood") return PCCD::Traversal::likelihood;
     throw std::invalid_argument("unknown traversal " + name + " (flat, depth_first, likelihood)");
+}
+
+PCCD::Bounding_volume volume_of(const std::string& name)
+{
+    for (const auto v : {PCCD::Bounding_volume::box_and_slab, PCCD::Bounding_volume::box, PCCD::Bounding_volume::sphere})
+        if (name == PCCD::to_string(v)) return v;
+    throw std::invalid_argument("unknown bounding volume " + name + " (box_and_slab, box, sphere)");
 }
 
 double thread_cpu_us()
@@ -191,8 +202,12 @@ void run_model(const std::string& name, const Arguments& args, std::ofstream* cs
     std::vector<Eigen::Vector3d> points(std::size_t(sample.points.cols()));
     for (Eigen::Index i = 0; i < sample.points.cols(); ++i) points[std::size_t(i)] = sample.points.col(i);
     const auto start = pccd_bench::Clock::now();
-    const PCCD::Point_cloud_object<> object(points);
+    const PCCD::Point_cloud_object<> object(points, {.hierarchy = {.volume = volume_of(args.volumes.front())}});
     const double preprocess_ms = pccd_bench::ms_since(start);
+    // The same cloud with each further bounding volume (the first is `object`).
+    std::map<std::string, PCCD::Point_cloud_object<>> with_volume;
+    for (std::size_t k = 1; k < args.volumes.size(); ++k)
+        with_volume.emplace(args.volumes[k], PCCD::Point_cloud_object<>(points, {.hierarchy = {.volume = volume_of(args.volumes[k])}}));
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     std::printf("\n%s: %zu triangles, %zu points sampled by area, r(P) %.5f, preprocessing %.0f ms, peak memory so "
@@ -209,8 +224,13 @@ void run_model(const std::string& name, const Arguments& args, std::ofstream* cs
         run_budgets(name, object, fcl, poses, args, budget_csv);
         if (args.traversals.empty()) return;
     }
+    // A method is a traversal, with "/volume" for the volumes after the first (flat walks no volume).
     std::vector<std::string> methods{"fcl"};
-    for (const auto& t : args.traversals) methods.push_back(t);
+    for (const auto& t : args.traversals) {
+        methods.push_back(t);
+        if (t != "flat")
+            for (std::size_t k = 1; k < args.volumes.size(); ++k) methods.push_back(t + "/" + args.volumes[k]);
+    }
     std::map<std::string, Series> series;
     for (const auto& pose : poses) {
         const auto [fcl_hit, fcl_us] = timed(args.repetitions, [&] { return fcl.collide(pose.pose_a, pose.pose_b); });
@@ -229,13 +249,16 @@ void run_model(const std::string& name, const Arguments& args, std::ofstream* cs
                      << ',' << us << ',' << f << '\n';
         };
         record("fcl", fcl_hit, fcl_us, 0.0);
-        for (const auto& t : args.traversals) {
-            const PCCD::Intersection_options options{.seed = args.seed, .traversal = traversal_of(t)};
+        for (const auto& m : methods) {
+            if (m == "fcl") continue;
+            const std::size_t slash = m.find('/');
+            const PCCD::Point_cloud_object<>& o = slash == std::string::npos ? object : with_volume.at(m.substr(slash + 1));
+            const PCCD::Intersection_options options{.seed = args.seed, .traversal = traversal_of(m.substr(0, slash))};
             const auto [result, us] = timed(args.repetitions, [&] {
-                return PCCD::do_intersect(object, pose.pose_a, object, pose.pose_b, options);
+                return PCCD::do_intersect(o, pose.pose_a, o, pose.pose_b, options);
             });
-            if (t == "flat") flat_hit = result.intersects;
-            record(t, result.intersects, us, double(result.counters.f_evaluations));
+            if (m == "flat") flat_hit = result.intersects;
+            record(m, result.intersects, us, double(result.counters.f_evaluations));
         }
     }
     std::printf("%-12s", "d");
@@ -250,12 +273,12 @@ void run_model(const std::string& name, const Arguments& args, std::ofstream* cs
         std::printf("\n");
     }
     const double fcl_all = pccd_bench::mean(series["fcl"].all), fcl_near = pccd_bench::mean(series["fcl"].near);
-    std::printf("%-12s %10s %10s %8s %10s %8s %8s %9s %9s %8s\n", "method", "mean_us", "median_us", "/fcl", "near_us",
+    std::printf("%-20s %10s %10s %8s %10s %8s %8s %9s %9s %8s\n", "method", "mean_us", "median_us", "/fcl", "near_us",
                 "/fcl", "p99_us", "!=flat", "!=fcl", "mean_f");
     for (const auto& m : methods) {
         const Series& s = series[m];
         const double all = pccd_bench::mean(s.all), near = pccd_bench::mean(s.near);
-        std::printf("%-12s %10.1f %10.1f %8.2f %10.1f %8.2f %8.1f %9zu %9zu %8.1f\n", m.c_str(), all,
+        std::printf("%-20s %10.1f %10.1f %8.2f %10.1f %8.2f %8.1f %9zu %9zu %8.1f\n", m.c_str(), all,
                     pccd_bench::median(s.all), all / fcl_all, near, near / fcl_near, p99(s.all), s.differs_flat,
                     s.differs_fcl, s.f_evaluations / double(s.all.size()));
     }

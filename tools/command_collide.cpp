@@ -45,6 +45,7 @@ struct Collide_options {
     std::string cases;
     std::string hierarchy = "likelihood";
     double budget_us = 0.0;
+    std::string volume = "box_and_slab";
     std::string png;
 };
 
@@ -144,8 +145,8 @@ void run_collide(const Collide_options& o)
     const Object_points points_a = read_object_points(o.file_a, o.normalize);
     const std::optional<Object_points> points_b =
         same ? std::nullopt : std::optional<Object_points>(read_object_points(o.file_b, o.normalize));
-    const Prepared_object a = prepare_object(points_a, o.file_a);
-    const Prepared_object b = same ? a : prepare_object(*points_b, o.file_b);
+    const Prepared_object a = prepare_object(points_a, o.file_a, o.volume);
+    const Prepared_object b = same ? a : prepare_object(*points_b, o.file_b, o.volume);
     const double preprocess_ms = a.preprocess_ms + (same ? 0.0 : b.preprocess_ms);
 
     if (cases) {
@@ -243,6 +244,9 @@ void register_collide(CLI::App& app)
                     "Time budget per query in microseconds (time-critical: status undecided when it runs out "
                     "first; default 0: none)")
         ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--volume", o->volume,
+                    "Bounding volume of the hierarchies' node tests: box_and_slab (default), box or sphere")
+        ->check(CLI::IsMember(volume_names()));
     auto* out = cmd->add_option("--out", o->out, "Write the intersection points to this file (.ply, .off, .xyz)");
     auto* json = cmd->add_flag("--json", o->json, "Print one JSON object instead of text");
     auto* png = cmd->add_option("--png", o->png,

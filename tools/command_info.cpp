@@ -109,6 +109,8 @@ nlohmann::json describe_file(const std::string& path)
                         {"nodes", h.nodes().size()},
                         {"leaves", leaves},
                         {"leaf_size", h.leaf_size()},
+                        {"volume", PCCD::to_string(h.volume())},
+                        {"build_ms", t.hierarchy},
                         {"reaches", h.has_reach()},
                         {"largest_reach", h.root().reach},
                         {"bytes", h.memory_bytes()},

@@ -54,6 +54,21 @@ inline PCCD::Intersection_options query_options(std::uint64_t seed, const std::s
     return options;
 }
 
+/// The names of --volume (Point_cloud_hierarchy_options::volume).
+inline const std::vector<std::string>& volume_names()
+{
+    static const std::vector<std::string> names{"box_and_slab", "box", "sphere"};
+    return names;
+}
+
+/// The bounding volume named `name` (one of volume_names()).
+inline PCCD::Bounding_volume volume_from_name(const std::string& name)
+{
+    for (const auto v : {PCCD::Bounding_volume::box_and_slab, PCCD::Bounding_volume::box, PCCD::Bounding_volume::sphere})
+        if (name == PCCD::to_string(v)) return v;
+    throw PCCD::Invalid_input("--volume must be box_and_slab, box or sphere, not \"" + name + "\"");
+}
+
 inline const std::vector<std::string>& method_names()
 {
     static const std::vector<std::string> names{PCCD::Interpolation_search::name(), PCCD::Randomized_sampling::name()};
@@ -86,15 +101,19 @@ struct Prepared_object {
     double preprocess_ms;
 };
 
-/// Preprocesses the points with Point_cloud_object's defaults; normals, when present, are hints
-/// that orient the object's normals (as `pccd eval` does).
+/// Preprocesses the points with Point_cloud_object's defaults (the hierarchy's bounding volume
+/// named `volume`); normals, when present, are hints that orient the object's normals (as `pccd
+/// eval` does).
 /// \throws PCCD::Invalid_input, naming `name`, when no point has a normal: the points are too few
 ///         or too degenerate (e.g. all on one line) to make a surface, and every query would answer
 ///         "separate" without looking.
-inline Prepared_object prepare_object(const Object_points& input, const std::string& name)
+inline Prepared_object prepare_object(const Object_points& input, const std::string& name,
+                                      const std::string& volume = "box_and_slab")
 {
     const Clock::time_point start = Clock::now();
-    PCCD::Point_cloud_object<> object(input, with_progress({}, name));
+    PCCD::Point_cloud_object_options options;
+    options.hierarchy.volume = volume_from_name(volume);
+    PCCD::Point_cloud_object<> object(input, with_progress(options, name));
     if (object.orientation().unoriented == object.size())
         throw PCCD::Invalid_input(name + ": no point has a surface normal: its " + std::to_string(object.size()) +
                                   " points are too few or too degenerate (e.g. all on one line) to make a surface");
