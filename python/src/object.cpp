@@ -44,6 +44,14 @@ T option_value(const py::handle& value, const std::string& key)
 
 /// The options the keyword arguments name; an unknown name raises TypeError, a value PCCD rejects
 /// raises ValueError when the object is built.
+/// The bounding volume named `name` ('box_and_slab', 'box', 'sphere'); `where` names the call in the error.
+PCCD::Bounding_volume volume_of(const std::string& name, const std::string& where)
+{
+    for (const auto v : {PCCD::Bounding_volume::box_and_slab, PCCD::Bounding_volume::box, PCCD::Bounding_volume::sphere})
+        if (name == PCCD::to_string(v)) return v;
+    throw py::value_error(where + ": volume must be 'box_and_slab', 'box' or 'sphere', not '" + name + "'");
+}
+
 PCCD::Point_cloud_object_options object_options(const py::kwargs& kwargs)
 {
     using Setter = std::function<void(PCCD::Point_cloud_object_options&, const py::handle&, const std::string&)>;
@@ -77,6 +85,7 @@ PCCD::Point_cloud_object_options object_options(const py::kwargs& kwargs)
         {"sampling_radius_seed",
          [](auto& o, const py::handle& v, const std::string& k) { o.sampling_radius.seed = option_value<std::uint64_t>(v, k); }},
         {"leaf_size", [](auto& o, const py::handle& v, const std::string& k) { o.hierarchy.leaf_size = option_value<std::size_t>(v, k); }},
+        {"volume", [](auto& o, const py::handle& v, const std::string& k) { o.hierarchy.volume = volume_of(option_value<std::string>(v, k), "Object()"); }},
         {"spatial_order", [](auto& o, const py::handle& v, const std::string& k) { o.spatial_order = option_value<bool>(v, k); }},
         {"threads",
          [](auto& o, const py::handle& v, const std::string& k) {
@@ -184,6 +193,9 @@ normals : array_like, optional
         Seed of those samples (default 1).
     leaf_size : int
         Largest number of points in a hierarchy leaf (default 8).
+    volume : str
+        Bounding volume of the hierarchy's node tests: 'box_and_slab' (default, measured fastest),
+        'box' or 'sphere'. The answers do not depend on it.
     spatial_order : bool
         Store the points in a spatial (Morton) order, near in memory when near in space (default
         True; ``input_indices`` maps them back to the points given).
@@ -231,7 +243,8 @@ void add_object(py::module_& m)
             py::arg("path"), R"doc(Write the object to a binary file (replaced if it exists).
 
 The file holds the points, normals, parameters, timings, graph and geodesic map, with a
-checksum; ``Object.load`` reads it back bit for bit (the kd-tree and hierarchy are rebuilt).
+checksum; ``Object.load`` reads it back bit for bit (the kd-tree is rebuilt, the hierarchy from its
+stored layout).
 
 Parameters
 ----------
@@ -245,12 +258,18 @@ OSError
 )doc")
         .def_static(
             "load",
-            [](const py::object& path, std::size_t leaf_size) {
+            [](const py::object& path, std::optional<std::size_t> leaf_size, std::optional<std::string> volume) {
                 const std::string file = py::str(path);
+                std::optional<PCCD::Point_cloud_hierarchy_options> hierarchy;
+                if (leaf_size || volume) {
+                    hierarchy.emplace();
+                    if (leaf_size) hierarchy->leaf_size = *leaf_size;
+                    if (volume) hierarchy->volume = volume_of(*volume, "Object.load()");
+                }
                 py::gil_scoped_release release;
-                return Object::load(file, PCCD::Point_cloud_hierarchy_options{.leaf_size = leaf_size});
+                return hierarchy ? Object::load(file, *hierarchy) : Object::load(file);
             },
-            py::arg("path"), py::kw_only(), py::arg("leaf_size") = PCCD::Point_cloud_hierarchy_options{}.leaf_size,
+            py::arg("path"), py::kw_only(), py::arg("leaf_size") = py::none(), py::arg("volume") = py::none(),
             R"doc(Read an object written by ``Object.save``.
 
 Parameters
@@ -258,7 +277,12 @@ Parameters
 path : str or os.PathLike
     The file to read.
 leaf_size : int, optional
-    Largest number of points in a leaf of the rebuilt hierarchy (default 16).
+    Largest number of points in a hierarchy leaf.
+volume : str, optional
+    'box_and_slab', 'box' or 'sphere'. With neither given (default), the hierarchy the file stores
+    is rebuilt from its layout. Giving either asks for a hierarchy with the values given and the
+    defaults (8, 'box_and_slab') for the other: the stored one when they are the file's, otherwise
+    a new build.
 
 Returns
 -------
@@ -272,6 +296,8 @@ OSError
     corrupted (checksum) or inconsistent; the message names the file and the problem.
 )doc")
         .def_property_readonly("size", &Object::size, "int: Number of points of the surface (outliers removed).")
+        .def_property_readonly("volume", [](const Object& o) { return std::string(PCCD::to_string(o.hierarchy().volume())); },
+                               "str: The bounding volume of the hierarchy ('box_and_slab', 'box' or 'sphere').")
         .def_property_readonly("input_points", [](const Object& o) { return o.scan().input_points; },
                                "int: Number of points given (before the removal of outliers).")
         .def_property_readonly(

@@ -298,5 +298,17 @@ TEST_CASE("The build does not depend on the thread count", "[hierarchy]")
         const PCCD::Point_cloud_hierarchy all(p, reach, {.volume = volume});
         require_same_hierarchy(all, one);
     }
+    // 500 copies of one point end in a leaf of more than 8 coincident points, which the in-place build
+    // does not foresee: it starts again sequentially, with the same tree whatever the thread count.
+    Eigen::Matrix3Xd duplicates = p;
+    for (Eigen::Index i = 0; i < 500; ++i) duplicates.col(1000 + 7 * i) = p.col(3);
+    const PCCD::Point_cloud_hierarchy one(duplicates, reach, {.threads = 1u});
+    const PCCD::Point_cloud_hierarchy all(duplicates, reach);
+    require_same_hierarchy(all, one);
+    std::size_t largest = 0;
+    for (const auto& node : all.nodes())
+        if (node.is_leaf()) largest = std::max<std::size_t>(largest, node.count);
+    CHECK(largest > 8); // a leaf of coincident points, beyond the leaf size
+    require_same_hierarchy(PCCD::Point_cloud_hierarchy(all.layout(), duplicates, reach), all);
     CHECK_THROWS_WITH(PCCD::Point_cloud_hierarchy(p, reach, {.threads = 0u}), Contains("threads = 0"));
 }

@@ -78,6 +78,16 @@ elseif(CASE STREQUAL "collide_json")
   pccd_run(OK ARGS collide sphere.xyz sphere.xyz --transform-b ${shift_1} --json
            MATCH "\"intersects\": true" "\"status\": \"intersecting\"" "\"method\": \"isearch\"" "\"mode\": \"first\""
                  "\"points\": 1," "\"same_object\": true" ${json_counters})
+elseif(CASE STREQUAL "collide_volume")
+  # Every bounding volume gives the same answers; info names the volume; a bad name is refused.
+  foreach(volume box_and_slab box sphere)
+    pccd_run(OK ARGS collide sphere.xyz sphere.xyz --transform-b ${shift_1} --volume ${volume} --json
+             MATCH "\"intersects\": true" "\"status\": \"intersecting\"")
+    pccd_run(OK ARGS collide sphere.xyz sphere.xyz --transform-b "1,0,0,3, 0,1,0,0, 0,0,1,0" --volume ${volume} --json
+             MATCH "\"intersects\": false" "\"status\": \"separate\"")
+  endforeach()
+  pccd_run(OK ARGS info sphere.xyz --json MATCH "\"volume\": \"box_and_slab\"")
+  pccd_run(FAIL ARGS collide sphere.xyz sphere.xyz --volume cube MATCH "--volume")
 elseif(CASE STREQUAL "collide_text")
   pccd_run(OK ARGS collide sphere.xyz torus.ply --transform-a ${identity} --transform-b ${shift_1}
            MATCH "A: sphere.xyz, 2000 points" "B: torus.ply, 2000 points" "answer: intersecting"

@@ -165,6 +165,24 @@ def test_save_load_round_trip(shapes, tmp):
                                pccd.intersection_points(sphere, p, torus, None, method=method, seed=3))
 
 
+def test_bounding_volume_option_and_load(shapes, tmp):
+    sphere, torus = shapes
+    assert torus.volume == "box_and_slab"
+    balls = pccd.Object(torus.points, volume="sphere", leaf_size=4)
+    assert balls.volume == "sphere"
+    # The answers do not depend on the volume (every test is conservative).
+    for p in (TOUCHING, APART, pose((0, 1, 0), 1.0, (0.7, 0.2, 0.1))):
+        assert pccd.do_intersect(sphere, p, balls, None).intersects == pccd.do_intersect(sphere, p, torus, None).intersects
+    balls.save(tmp / "balls.pccd")
+    assert pccd.Object.load(tmp / "balls.pccd").volume == "sphere"
+    assert pccd.Object.load(tmp / "balls.pccd", volume="box").volume == "box"
+    assert pccd.Object.load(tmp / "balls.pccd", leaf_size=8).volume == "box_and_slab"
+    with pytest.raises(ValueError, match="volume must be"):
+        pccd.Object(torus.points, volume="cube")
+    with pytest.raises(ValueError, match="volume must be"):
+        pccd.Object.load(tmp / "balls.pccd", volume="cube")
+
+
 # --- queries ----------------------------------------------------------------------------------------
 
 def test_answers_and_result(shapes):

@@ -163,7 +163,7 @@ public:
         m_order.resize(n);
         std::iota(m_order.begin(), m_order.end(), Index(0));
         internal::with_threads(options.threads, [&] {
-            m_nodes = build_subtree(coordinates, 0, Index(n), parallel_depth);
+            build_tree(coordinates);
             finish(coordinates, reach);
         });
     }
@@ -331,7 +331,7 @@ public:
     /// @}
 
 private:
-    /// Subtrees of more points than this are built in parallel (down to parallel_depth levels).
+    /// Nodes of more points than this build their halves in parallel (down to parallel_depth levels).
     static constexpr Index parallel_points = 1u << 14;
     static constexpr int parallel_depth = 8;
 
@@ -362,35 +362,65 @@ private:
         return coordinates;
     }
 
-    /// The nodes of the subtree over m_order[first, last), in depth-first order with child indices
-    /// relative to the subtree's root. Above parallel_points points (and while `depth` > 0) the two
-    /// halves are built in parallel; the tree does not depend on it (the same splits either way).
-    std::vector<Node> build_subtree(const Eigen::Matrix3Xd& points, Index first, Index last, int depth)
+    /// Builds the tree into m_nodes. The median splits fix every subtree's size from its point count
+    /// alone (predicted_nodes), unless a node of more than leaf_size points that all coincide stops as
+    /// a leaf; so the nodes are first built in place, the two halves of a node above
+    /// parallel_points points in parallel, into an array of the predicted size. If such a leaf
+    /// turns up, the tree is built again sequentially from the original order (the same tree either
+    /// way; no copies of the node array in the common case).
+    void build_tree(const Eigen::Matrix3Xd& points)
     {
-        if (depth <= 0 || last - first <= parallel_points) {
-            std::vector<Node> nodes;
-            nodes.reserve(2 * ((last - first) / m_leaf_size + 1));
-            build(points, first, last, nodes);
-            return nodes;
-        }
-        Node root;
-        const Index middle = split(points, first, last, root);
-        if (middle == last) return {root};
-        std::vector<Node> left_nodes, right_nodes;
-        internal::parallel_invoke([&] { left_nodes = build_subtree(points, first, middle, depth - 1); },
-                                  [&] { right_nodes = build_subtree(points, middle, last, depth - 1); });
-        std::vector<Node> nodes;
-        nodes.reserve(1 + left_nodes.size() + right_nodes.size());
-        root.right = Index(1 + left_nodes.size());
-        nodes.push_back(root);
-        for (const std::vector<Node>* part : {&left_nodes, &right_nodes}) {
-            const Index offset = Index(nodes.size());
-            for (Node node : *part) {
-                if (!node.is_leaf()) node.right += offset;
-                nodes.push_back(node);
-            }
-        }
+        const Index n = Index(points.cols());
+        std::vector<std::pair<Index, std::size_t>> memo;
+        m_nodes.assign(predicted_nodes(n, memo), Node{});
+        bool complete = true;
+        build_in_place(points, 0, n, 0, parallel_depth, memo, complete);
+        if (complete) return;
+        std::iota(m_order.begin(), m_order.end(), Index(0));
+        m_nodes.clear();
+        build(points, 0, n, m_nodes);
+        m_nodes.shrink_to_fit();
+    }
+
+    /// The number of nodes of a subtree of `count` points whose points never all coincide.
+    std::size_t predicted_nodes(Index count, std::vector<std::pair<Index, std::size_t>>& memo) const
+    {
+        if (count <= m_leaf_size) return 1;
+        for (const auto& [c, nodes] : memo)
+            if (c == count) return nodes;
+        const std::size_t nodes = 1 + predicted_nodes(count / 2, memo) + predicted_nodes(count - count / 2, memo);
+        memo.emplace_back(count, nodes);
         return nodes;
+    }
+
+    /// Builds the subtree over m_order[first, last) as node `id` of m_nodes and the nodes after it
+    /// (their places predicted). Sets `complete` to false (and stops) at a leaf the prediction did not
+    /// foresee. `memo` is only read (filled by build_tree()).
+    void build_in_place(const Eigen::Matrix3Xd& points, Index first, Index last, std::size_t id, int depth,
+                        const std::vector<std::pair<Index, std::size_t>>& memo, bool& complete)
+    {
+        Node& node = m_nodes[id];
+        const Index middle = split(points, first, last, node);
+        if (middle == last) {
+            if (node.count > m_leaf_size) complete = false; // coincident points: not the predicted shape
+            return;
+        }
+        const Index left_count = middle - first;
+        std::size_t left_nodes = 1;
+        if (left_count > m_leaf_size)
+            for (const auto& [c, nodes] : memo)
+                if (c == left_count) left_nodes = nodes;
+        node.right = Index(id + 1 + left_nodes);
+        const auto left = [&] { build_in_place(points, first, middle, id + 1, depth - 1, memo, complete); };
+        bool right_complete = true;
+        const auto right = [&] { build_in_place(points, middle, last, node.right, depth - 1, memo, right_complete); };
+        if (depth > 0 && last - first > parallel_points) {
+            internal::parallel_invoke(left, right);
+        } else {
+            left();
+            right();
+        }
+        if (!right_complete) complete = false;
     }
 
     /// Appends the subtree over m_order[first, last) to `nodes` (absolute indices). Returns its root.
