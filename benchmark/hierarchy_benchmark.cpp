@@ -236,7 +236,8 @@ void run_model(const std::string& name, const Arguments& args, std::ofstream* cs
         const auto [fcl_hit, fcl_us] = timed(args.repetitions, [&] { return fcl.collide(pose.pose_a, pose.pose_b); });
         bool flat_hit = fcl_hit;
         const bool near = pose.distance >= 1.0 && pose.distance <= 2.25;
-        const auto record = [&](const std::string& method, bool hit, double us, double f) {
+        const auto record = [&](const std::string& method, bool hit, double us, double f, std::size_t node_pairs,
+                                std::size_t leaf_pairs) {
             Series& s = series[method];
             s.by_distance[pose.distance].push_back(us);
             s.all.push_back(us);
@@ -246,9 +247,9 @@ void run_model(const std::string& name, const Arguments& args, std::ofstream* cs
             s.f_evaluations += f;
             if (csv)
                 *csv << name << ',' << method << ',' << pose.distance << ',' << pose.rotation_index << ',' << int(hit)
-                     << ',' << us << ',' << f << '\n';
+                     << ',' << us << ',' << f << ',' << node_pairs << ',' << leaf_pairs << '\n';
         };
-        record("fcl", fcl_hit, fcl_us, 0.0);
+        record("fcl", fcl_hit, fcl_us, 0.0, 0, 0);
         for (const auto& m : methods) {
             if (m == "fcl") continue;
             const std::size_t slash = m.find('/');
@@ -258,7 +259,8 @@ void run_model(const std::string& name, const Arguments& args, std::ofstream* cs
                 return PCCD::do_intersect(o, pose.pose_a, o, pose.pose_b, options);
             });
             if (m == "flat") flat_hit = result.intersects;
-            record(m, result.intersects, us, double(result.counters.f_evaluations));
+            record(m, result.intersects, us, double(result.counters.f_evaluations), result.counters.node_pairs,
+                   result.counters.leaf_pairs);
         }
     }
     std::printf("%-12s", "d");
@@ -298,7 +300,7 @@ int main(int argc, char** argv)
         std::ofstream csv;
         if (!args.csv.empty()) {
             csv = pccd_bench::open_csv(args.csv);
-            csv << "model,method,distance,rotation,intersects,cpu_us,f_evaluations\n";
+            csv << "model,method,distance,rotation,intersects,cpu_us,f_evaluations,node_pairs,leaf_pairs\n";
         }
         std::ofstream budget_csv;
         if (!args.budget_csv.empty()) {
