@@ -6,7 +6,7 @@
 set(PCCD_CGAL_DATA_ARCHIVE "/usr/share/doc/libcgal-dev/data.tar.gz" CACHE FILEPATH
     "Archive of CGAL's data files (Debian package libcgal-demo)")
 set(PCCD_DATA_FILES data/meshes/bunny00.off data/meshes/elephant.off data/meshes/eight.off
-    data/meshes/sphere.off data/meshes/knot1.off)
+    data/meshes/sphere.off data/meshes/knot1.off data/meshes/armadillo.off data/meshes/ChineseDragon-10kv.off)
 set(PCCD_DATA_DIR "")
 set(PCCD_POINTS_DIR "")
 
@@ -26,7 +26,8 @@ endfunction()
 
 if(EXISTS "${PCCD_CGAL_DATA_ARCHIVE}")
   set(_pccd_data_root "${PROJECT_BINARY_DIR}/cgal-data")
-  _pccd_extract(data/meshes/bunny00.off ${PCCD_DATA_FILES})
+  # The marker is the last mesh added, so that a build tree made before it extracts it too.
+  _pccd_extract(data/meshes/ChineseDragon-10kv.off ${PCCD_DATA_FILES})
   if(EXISTS "${_pccd_data_root}/data/meshes/bunny00.off")
     set(PCCD_DATA_DIR "${_pccd_data_root}/data/meshes")
     message(STATUS "PCCD: scanned meshes from libcgal-demo in ${PCCD_DATA_DIR}")

@@ -394,8 +394,10 @@ private:
     }
 
     /// Builds the subtree over m_order[first, last) as node `id` of m_nodes and the nodes after it
-    /// (their places predicted). Sets `complete` to false (and stops) at a leaf the prediction did not
-    /// foresee. `memo` is only read (filled by build_tree()).
+    /// (their places predicted). Sets `complete` to false at a leaf the prediction did not foresee
+    /// (the rest of the build is then wasted and redone). `memo` is only read (filled by
+    /// build_tree()). Only the nodes of one subtree write its `complete`, one after another (a node
+    /// writes it after its children's tasks have joined; a right half has its own flag).
     void build_in_place(const Eigen::Matrix3Xd& points, Index first, Index last, std::size_t id, int depth,
                         const std::vector<std::pair<Index, std::size_t>>& memo, bool& complete)
     {
