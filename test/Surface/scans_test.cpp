@@ -817,6 +817,12 @@ TEST_CASE("an object with outliers and noise saves and loads back identical", "[
     std::memcpy(&stored_indices, bytes.data() + fit_at + 1, 8);
     REQUIRE(stored_indices == n);
     const std::size_t indices_end = fit_at + 1 + 8 + 4 * n;
+    // Version 5: the hierarchy's layout follows them (u8 volume, u64 leaf size, u64 M nodes, u32
+    // counts[M], u32 rights[M], u32 order[n]).
+    std::uint64_t stored_nodes = 0;
+    std::memcpy(&stored_nodes, bytes.data() + indices_end + 9, 8);
+    REQUIRE(stored_nodes == object.hierarchy().nodes().size());
+    const std::size_t hierarchy_end = indices_end + 1 + 8 + 8 + 8 * std::size_t(stored_nodes) + 4 * n;
     // The bytes without [begin, end), as a file of `version` with a fresh checksum.
     const auto older = [&](std::size_t begin, std::size_t end, std::uint32_t version, const char* name) {
         std::string b = bytes.substr(0, begin) + bytes.substr(end, bytes.size() - 8 - end);
@@ -829,17 +835,23 @@ TEST_CASE("an object with outliers and noise saves and loads back identical", "[
         std::ofstream(older_path, std::ios::binary).write(b.data(), std::streamsize(b.size()));
         return PCCD::Point_cloud_object<>::load(older_path);
     };
+    // Version 4 (without the hierarchy): one built with default options, the same as the object's.
+    const auto v4 = older(indices_end, hierarchy_end, 4, "scan_surface_v4.pccdobj");
+    CHECK(v4.hierarchy().order() == object.hierarchy().order());
+    CHECK(v4.hierarchy().nodes().size() == object.hierarchy().nodes().size());
+    CHECK(v4.hierarchy().root().box.min() == object.hierarchy().root().box.min());
+    CHECK(v4.input_indices() == object.input_indices());
     // Version 3 (points in the order given): identity input indices.
-    const auto v3 = older(fit_at + 1, indices_end, 3, "scan_surface_v3.pccdobj");
+    const auto v3 = older(fit_at + 1, hierarchy_end, 3, "scan_surface_v3.pccdobj");
     CHECK(v3.surface().fit() == PCCD::Surface_fit::sphere);
     CHECK(v3.normals() == object.normals());
     for (std::size_t i = 0; i < n; ++i) CHECK(v3.input_index(i) == i);
-    const auto v2 = older(fit_at, indices_end, 2, "scan_surface_v2.pccdobj");
+    const auto v2 = older(fit_at, hierarchy_end, 2, "scan_surface_v2.pccdobj");
     CHECK(v2.surface().fit() == PCCD::Surface_fit::plane);
     CHECK(v2.euclidean_surface().fit() == PCCD::Surface_fit::plane);
     CHECK(v2.noise_estimate() == object.noise_estimate());
     CHECK(v2.normals() == object.normals());
-    const auto old = older(scan_begin, indices_end, 1, "scan_surface_v1.pccdobj");
+    const auto old = older(scan_begin, hierarchy_end, 1, "scan_surface_v1.pccdobj");
     CHECK(old.surface().fit() == PCCD::Surface_fit::plane);
     CHECK(old.size() == n);
     CHECK(old.scan().input_points == n);
