@@ -101,8 +101,7 @@ PCCD::Traversal traversal_of(const std::string& name)
 
 PCCD::Bounding_volume volume_of(const std::string& name)
 {
-    for (const auto v : {PCCD::Bounding_volume::box_and_slab, PCCD::Bounding_volume::box, PCCD::Bounding_volume::sphere})
-        if (name == PCCD::to_string(v)) return v;
+    if (const auto v = PCCD::bounding_volume_from_string(name)) return *v;
     throw std::invalid_argument("unknown bounding volume " + name + " (box_and_slab, box, sphere)");
 }
 

@@ -64,8 +64,7 @@ inline const std::vector<std::string>& volume_names()
 /// The bounding volume named `name` (one of volume_names()).
 inline PCCD::Bounding_volume volume_from_name(const std::string& name)
 {
-    for (const auto v : {PCCD::Bounding_volume::box_and_slab, PCCD::Bounding_volume::box, PCCD::Bounding_volume::sphere})
-        if (name == PCCD::to_string(v)) return v;
+    if (const auto v = PCCD::bounding_volume_from_string(name)) return *v;
     throw PCCD::Invalid_input("--volume must be box_and_slab, box or sphere, not \"" + name + "\"");
 }
 

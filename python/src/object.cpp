@@ -47,8 +47,7 @@ T option_value(const py::handle& value, const std::string& key)
 /// The bounding volume named `name` ('box_and_slab', 'box', 'sphere'); `where` names the call in the error.
 PCCD::Bounding_volume volume_of(const std::string& name, const std::string& where)
 {
-    for (const auto v : {PCCD::Bounding_volume::box_and_slab, PCCD::Bounding_volume::box, PCCD::Bounding_volume::sphere})
-        if (name == PCCD::to_string(v)) return v;
+    if (const auto v = PCCD::bounding_volume_from_string(name)) return *v;
     throw py::value_error(where + ": volume must be 'box_and_slab', 'box' or 'sphere', not '" + name + "'");
 }
 

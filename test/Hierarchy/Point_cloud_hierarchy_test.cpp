@@ -11,6 +11,7 @@
 
 #include <cstring>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "hierarchy_test_helpers.h"
@@ -197,6 +198,14 @@ void require_same_hierarchy(const PCCD::Point_cloud_hierarchy& a, const PCCD::Po
 }
 
 } // namespace
+
+TEST_CASE("Bounding volumes by name: to_string and back", "[hierarchy]")
+{
+    for (const V v : {V::box_and_slab, V::box, V::sphere}) CHECK(PCCD::bounding_volume_from_string(PCCD::to_string(v)) == v);
+    CHECK(std::string(PCCD::to_string(V::box_and_slab)) == "box_and_slab");
+    for (const char* other : {"", "Box", "spheres", "obb", "unknown"}) CHECK_FALSE(PCCD::bounding_volume_from_string(other));
+    CHECK(std::string(PCCD::to_string(V(9))) == "unknown");
+}
 
 TEST_CASE("Sphere and box volumes: every sphere holds its node's points, a box tree has no slabs", "[hierarchy]")
 {

@@ -21,6 +21,7 @@
 #include <numeric>
 #include <optional>
 #include <span>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -62,6 +63,14 @@ inline const char* to_string(Bounding_volume v)
     case Bounding_volume::sphere: return "sphere";
     }
     return "unknown";
+}
+
+/// The bounding volume whose to_string() is `name`; std::nullopt for any other name.
+inline std::optional<Bounding_volume> bounding_volume_from_string(std::string_view name)
+{
+    for (const auto v : {Bounding_volume::box_and_slab, Bounding_volume::box, Bounding_volume::sphere})
+        if (name == to_string(v)) return v;
+    return std::nullopt;
 }
 
 /// Options of Point_cloud_hierarchy.
