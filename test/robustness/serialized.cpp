@@ -246,11 +246,21 @@ TEST_CASE("serialized objects: inconsistent content behind a valid checksum", "[
     // tree of the points (an order that is not a permutation, a count off the median, a right child
     // out of place), each caught before any query could trust it.
     crafted("volume", [&](std::string& b) { b[at.hierarchy] = char(9); }, {"unknown bounding volume 9"});
-    for (const std::uint64_t leaf : {std::uint64_t(0), std::uint64_t(n + 1)})
+    for (const std::uint64_t leaf : {std::uint64_t(0), std::uint64_t(1) << 40})
         crafted("leaf_size", [&](std::string& b) { put(b, at.hierarchy + 1, leaf); }, {"invalid hierarchy leaf size"});
     for (const std::uint64_t nodes : {std::uint64_t(0), std::uint64_t(2 * n), ~std::uint64_t(0)})
         crafted("nodes", [&](std::string& b) { put(b, at.hierarchy + 9, nodes); }, {"inconsistent number of hierarchy nodes"});
     const std::size_t counts = at.hierarchy + 17, rights = counts + 4 * at.nodes, order = rights + 4 * at.nodes;
+    // A leaf size above N is legitimate (one leaf): such a file loads.
+    {
+        const Object few(fibonacci_sphere(7));
+        REQUIRE(few.hierarchy().nodes().size() == 1);
+        const std::string few_path = path_of("few.pccdobj");
+        few.save(few_path);
+        const Object loaded = Object::load(few_path);
+        CHECK(loaded.hierarchy().nodes().size() == 1);
+        CHECK(loaded.hierarchy().order() == few.hierarchy().order());
+    }
     crafted("hierarchy_order", [&](std::string& b) { put(b, order + 4, get<std::uint32_t>(b, order)); },
             {"inconsistent content", "not a permutation"});
     crafted("hierarchy_count", [&](std::string& b) { put(b, counts + 4, get<std::uint32_t>(b, counts + 4) + 1); },

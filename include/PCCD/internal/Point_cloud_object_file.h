@@ -105,7 +105,8 @@ inline Point_cloud_hierarchy::Layout read_hierarchy_section(Binary_reader& in, s
     if (volume > std::uint8_t(Bounding_volume::sphere)) in.fail(concat("unknown bounding volume ", int(volume)));
     layout.volume = Bounding_volume(volume);
     const auto leaf_size = in.get<std::uint64_t>();
-    if (leaf_size == 0 || leaf_size > n) in.fail(concat("invalid hierarchy leaf size ", leaf_size));
+    if (leaf_size == 0 || leaf_size > std::numeric_limits<std::uint32_t>::max())
+        in.fail(concat("invalid hierarchy leaf size ", leaf_size));
     layout.leaf_size = std::size_t(leaf_size);
     const auto nodes = in.get<std::uint64_t>();
     if (nodes == 0 || nodes >= 2 * n || in.remaining() / (2 * sizeof(std::uint32_t)) < nodes)
