@@ -65,7 +65,7 @@ Traversal_counters for_each_overlapping_leaf_pair(const Point_cloud_hierarchy& a
 {
     Traversal_counters counters;
     if (a.empty() || b.empty()) return counters;
-    if (!(margin >= 0.0 && std::isfinite(margin)))
+    if (!(std::isfinite(margin) && margin >= 0.0)) // isfinite first: no ordered comparison with NaN (FP traps)
         throw Invalid_input(internal::concat("overlapping leaves: margin ", margin, " must be finite and >= 0"));
     using Index = Point_cloud_hierarchy::Index;
     std::vector<std::pair<Index, Index>> stack;
