@@ -104,6 +104,9 @@ TEST_CASE("a saved point cloud object loads back identical", "[surface]")
     same_hierarchy(sphere_loaded.hierarchy(), sphere_object.hierarchy());
     same_hierarchy(PCCD::Point_cloud_object<>::load(path, spheres).hierarchy(), sphere_object.hierarchy());
     same_hierarchy(PCCD::Point_cloud_object<>::load(path, {}).hierarchy(), object.hierarchy());
+    // A bad option is the caller's error, not the file's.
+    CHECK_THROWS_WITH(PCCD::Point_cloud_object<>::load(path, {.leaf_size = 0}), Catch::Contains("leaf_size must be >= 1"));
+    CHECK_THROWS_AS(PCCD::Point_cloud_object<>::load(path, {.threads = 0u}), PCCD::Invalid_input);
     object.save(path);
 
     // Corruption anywhere is caught by the checksum; a foreign or missing file is named.

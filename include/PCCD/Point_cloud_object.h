@@ -181,6 +181,8 @@ public:
     static Point_cloud_object load(const std::string& path);
     /// load() with the hierarchy's options given: the stored hierarchy when it has this leaf size and
     /// volume, otherwise one built with `hierarchy`.
+    /// \throws Invalid_input if hierarchy.leaf_size is 0 or hierarchy.threads is 0 or above 4096;
+    ///         File_error as load() above.
     static Point_cloud_object load(const std::string& path, const Point_cloud_hierarchy_options& hierarchy);
     /// @}
 

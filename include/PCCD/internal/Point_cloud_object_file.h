@@ -197,6 +197,9 @@ Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path)
 template <PointCloudKernel K>
 Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path, const Point_cloud_hierarchy_options& hierarchy)
 {
+    // The caller's options are checked before the file, so that a bad option is not blamed on it.
+    if (hierarchy.leaf_size == 0) throw Invalid_input("Point_cloud_object::load: the hierarchy's leaf_size must be >= 1");
+    internal::check_threads(hierarchy.threads, "Point_cloud_object::load: the hierarchy's threads");
     return load_file(path, &hierarchy);
 }
 
