@@ -1,6 +1,7 @@
 // Tests of Point_cloud_object (doc/design.md, "Map, in data-flow order": the whole preprocessed
 // object): one-call preprocessing, its reported state, and saving and loading (bit-for-bit round
 // trip, corrupted and foreign files rejected).
+#include "Hierarchy/hierarchy_compare.h"
 #include "surface_test_helpers.h"
 
 #include <PCCD/Point_cloud_object.h>
@@ -78,32 +79,17 @@ TEST_CASE("a saved point cloud object loads back identical", "[surface]")
         CHECK(loaded.euclidean_surface().evaluate(q.x).value == object.euclidean_surface().evaluate(q.x).value);
     }
     // The hierarchy comes back from the stored layout: the same tree, boxes, reaches and slabs.
-    const auto same_hierarchy = [](const PCCD::Point_cloud_hierarchy& a, const PCCD::Point_cloud_hierarchy& b) {
-        REQUIRE(a.nodes().size() == b.nodes().size());
-        CHECK(a.order() == b.order());
-        CHECK(a.volume() == b.volume());
-        CHECK(a.leaf_size() == b.leaf_size());
-        CHECK(a.ordered_points() == b.ordered_points());
-        for (std::size_t i = 0; i < a.nodes().size(); ++i) {
-            CHECK(a.nodes()[i].right == b.nodes()[i].right);
-            CHECK(a.nodes()[i].box.min() == b.nodes()[i].box.min());
-            CHECK(a.nodes()[i].box.max() == b.nodes()[i].box.max());
-            CHECK(a.nodes()[i].reach == b.nodes()[i].reach);
-            CHECK(a.nodes()[i].slab_normal == b.nodes()[i].slab_normal);
-            CHECK(a.nodes()[i].slab_min == b.nodes()[i].slab_min);
-            if (a.has_spheres()) CHECK(a.sphere(std::uint32_t(i)).radius == b.sphere(std::uint32_t(i)).radius);
-        }
-    };
-    same_hierarchy(loaded.hierarchy(), object.hierarchy());
+    using pccd_test::require_same_hierarchy;
+    require_same_hierarchy(loaded.hierarchy(), object.hierarchy());
     // A sphere tree of 4-point leaves is stored as such; asked for other options, load() builds those.
     const PCCD::Point_cloud_hierarchy_options spheres{.leaf_size = 4, .volume = PCCD::Bounding_volume::sphere};
     const PCCD::Point_cloud_object<> sphere_object(columns(sample.points), {.hierarchy = spheres});
     sphere_object.save(path);
     const auto sphere_loaded = PCCD::Point_cloud_object<>::load(path);
     CHECK(sphere_loaded.hierarchy().volume() == PCCD::Bounding_volume::sphere);
-    same_hierarchy(sphere_loaded.hierarchy(), sphere_object.hierarchy());
-    same_hierarchy(PCCD::Point_cloud_object<>::load(path, spheres).hierarchy(), sphere_object.hierarchy());
-    same_hierarchy(PCCD::Point_cloud_object<>::load(path, {}).hierarchy(), object.hierarchy());
+    require_same_hierarchy(sphere_loaded.hierarchy(), sphere_object.hierarchy());
+    require_same_hierarchy(PCCD::Point_cloud_object<>::load(path, spheres).hierarchy(), sphere_object.hierarchy());
+    require_same_hierarchy(PCCD::Point_cloud_object<>::load(path, {}).hierarchy(), object.hierarchy());
     // A bad option is the caller's error, not the file's.
     CHECK_THROWS_WITH(PCCD::Point_cloud_object<>::load(path, {.leaf_size = 0}), Catch::Contains("leaf_size must be >= 1"));
     CHECK_THROWS_AS(PCCD::Point_cloud_object<>::load(path, {.threads = 0u}), PCCD::Invalid_input);

@@ -9,11 +9,11 @@
 
 #include <catch2/catch.hpp>
 
-#include <cstring>
 #include <limits>
 #include <string>
 #include <vector>
 
+#include "hierarchy_compare.h"
 #include "hierarchy_test_helpers.h"
 
 using Catch::Matchers::Contains;
@@ -169,33 +169,7 @@ namespace {
 
 using V = PCCD::Bounding_volume;
 
-/// Every field of every node, the order, the ordered points and the spheres are the same, bit for bit.
-void require_same_hierarchy(const PCCD::Point_cloud_hierarchy& a, const PCCD::Point_cloud_hierarchy& b)
-{
-    REQUIRE(a.nodes().size() == b.nodes().size());
-    REQUIRE(a.order() == b.order());
-    REQUIRE(a.volume() == b.volume());
-    REQUIRE(a.leaf_size() == b.leaf_size());
-    CHECK(a.has_reach() == b.has_reach());
-    CHECK(a.ordered_points() == b.ordered_points());
-    REQUIRE(a.has_spheres() == b.has_spheres());
-    for (Index i = 0; i < a.nodes().size(); ++i) {
-        const auto &x = a.node(i), &y = b.node(i);
-        CHECK(x.box.min() == y.box.min());
-        CHECK(x.box.max() == y.box.max());
-        CHECK(x.first == y.first);
-        CHECK(x.count == y.count);
-        CHECK(x.right == y.right);
-        CHECK(x.reach == y.reach);
-        CHECK(x.slab_normal == y.slab_normal);
-        CHECK(std::memcmp(&x.slab_min, &y.slab_min, sizeof(double)) == 0);
-        CHECK(std::memcmp(&x.slab_max, &y.slab_max, sizeof(double)) == 0);
-        if (a.has_spheres()) {
-            CHECK(a.sphere(i).centre == b.sphere(i).centre);
-            CHECK(a.sphere(i).radius == b.sphere(i).radius);
-        }
-    }
-}
+using pccd_test::require_same_hierarchy;
 
 } // namespace
 
