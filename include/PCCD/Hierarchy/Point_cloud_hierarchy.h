@@ -173,7 +173,8 @@ public:
         std::iota(m_order.begin(), m_order.end(), Index(0));
         internal::with_threads(options.threads, [&] {
             build_tree(coordinates);
-            finish(coordinates, reach);
+            order_points(coordinates, reach);
+            finish();
         });
     }
 
@@ -197,7 +198,7 @@ public:
         check_layout(layout, std::size_t(coordinates.cols()));
         m_order = layout.order;
         m_nodes.resize(layout.counts.size());
-        // Ranges top-down (a parent precedes its children), boxes bottom-up.
+        // Ranges top-down (a parent precedes its children); boxes bottom-up from the ordered points.
         m_nodes[0].count = Index(coordinates.cols());
         for (std::size_t i = 0; i < m_nodes.size(); ++i) {
             Node& node = m_nodes[i];
@@ -209,18 +210,15 @@ public:
             r.first = node.first + l.count, r.count = node.count - l.count;
         }
         internal::with_threads(threads, [&] {
-            for (std::size_t i = m_nodes.size(); i-- > 0;) {
-                Node& node = m_nodes[i];
-                if (node.is_leaf()) {
-                    for (Index k = node.first; k < node.first + node.count; ++k) node.box.extend(coordinates.col(m_order[k]));
-                    if (node.count > m_leaf_size && node.box.sizes().maxCoeff() > 0.0)
-                        throw Invalid_input(internal::concat("point cloud hierarchy layout: leaf ", i, " holds ", node.count,
-                                                             " points that do not coincide (leaf size ", m_leaf_size, ")"));
-                } else {
-                    node.box = m_nodes[i + 1].box.merged(m_nodes[node.right].box);
-                }
+            order_points(coordinates, reach);
+            node_boxes();
+            for (std::size_t i = 0; i < m_nodes.size(); ++i) {
+                const Node& node = m_nodes[i];
+                if (node.is_leaf() && node.count > m_leaf_size && node.box.sizes().maxCoeff() > 0.0)
+                    throw Invalid_input(internal::concat("point cloud hierarchy layout: leaf ", i, " holds ", node.count,
+                                                         " points that do not coincide (leaf size ", m_leaf_size, ")"));
             }
-            finish(coordinates, reach);
+            finish();
         });
     }
 
@@ -263,25 +261,14 @@ public:
                                                      ") must be finite and >= 0"));
             m_ordered(3, Eigen::Index(k)) = r;
         }
-        // Children follow their parents in depth-first order: a backward sweep sees children first.
-        for (std::size_t i = m_nodes.size(); i-- > 0;) {
-            Node& node = m_nodes[i];
+        for (Node& node : m_nodes) {
             // The topology's slabs bound the old positions only; a refitted tree has none.
             node.slab_normal.setZero();
             node.slab_min = -std::numeric_limits<double>::infinity();
             node.slab_max = std::numeric_limits<double>::infinity();
-            if (node.is_leaf()) {
-                const auto block = m_ordered.middleCols(node.first, node.count);
-                node.box = Eigen::AlignedBox3d(block.topRows<3>().rowwise().minCoeff(),
-                                               block.topRows<3>().rowwise().maxCoeff());
-                node.reach = block.row(3).maxCoeff();
-            } else {
-                const Node& a = m_nodes[left(Index(i))];
-                const Node& b = m_nodes[node.right];
-                node.box = a.box.merged(b.box);
-                node.reach = std::max(a.reach, b.reach);
-            }
         }
+        node_boxes();
+        node_reaches();
         if (m_volume == Bounding_volume::sphere) {
             m_spheres.resize(m_nodes.size());
             for (std::size_t i = m_nodes.size(); i-- > 0;) {
@@ -506,8 +493,8 @@ private:
         if (end[0] != m) fail(m - end[0], " nodes outside the tree");
     }
 
-    /// Points and reaches in hierarchy order, node reaches, and the slabs or spheres the volume asks for.
-    void finish(const Eigen::Matrix3Xd& coordinates, const Eigen::VectorXd& reach)
+    /// Points and reaches in hierarchy order (checked already).
+    void order_points(const Eigen::Matrix3Xd& coordinates, const Eigen::VectorXd& reach)
     {
         const std::size_t n = m_order.size();
         m_ordered.resize(4, Eigen::Index(n));
@@ -515,12 +502,37 @@ private:
             m_ordered.col(Eigen::Index(k)).head<3>() = coordinates.col(m_order[k]);
             m_ordered(3, Eigen::Index(k)) = reach.size() == 0 ? 0.0 : reach(m_order[k]);
         }
-        // Node reaches bottom-up (children follow parents).
+    }
+
+    /// Every node's tight box from the ordered points, bottom-up (children follow their parents in
+    /// depth-first order, so a backward sweep sees children first).
+    void node_boxes()
+    {
+        for (std::size_t i = m_nodes.size(); i-- > 0;) {
+            Node& node = m_nodes[i];
+            if (node.is_leaf()) {
+                const auto block = m_ordered.middleCols(node.first, node.count).template topRows<3>();
+                node.box = Eigen::AlignedBox3d(block.rowwise().minCoeff(), block.rowwise().maxCoeff());
+            } else {
+                node.box = m_nodes[left(Index(i))].box.merged(m_nodes[node.right].box);
+            }
+        }
+    }
+
+    /// Every node's largest reach, bottom-up.
+    void node_reaches()
+    {
         for (std::size_t i = m_nodes.size(); i-- > 0;) {
             Node& node = m_nodes[i];
             node.reach = node.is_leaf() ? m_ordered.row(3).segment(node.first, node.count).maxCoeff()
                                         : std::max(m_nodes[left(Index(i))].reach, m_nodes[node.right].reach);
         }
+    }
+
+    /// Node reaches, and the slabs or spheres the volume asks for (the points ordered, the boxes set).
+    void finish()
+    {
+        node_reaches();
         if (m_volume == Bounding_volume::box_and_slab) compute_slabs();
         if (m_volume == Bounding_volume::sphere) compute_spheres();
     }
