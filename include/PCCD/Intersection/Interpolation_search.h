@@ -153,7 +153,7 @@ struct Interpolation_search {
         if (partner_candidates == 0) throw Invalid_input("interpolation search: partner_candidates must be >= 1");
         if (!(std::isgreater(walk_cover, 0.0) && std::islessequal(walk_cover, 1.0)))
             throw Invalid_input(internal::concat("interpolation search: walk_cover ", walk_cover, " must be in (0, 1]"));
-        if (!(walk_predicted_cover >= 0.0)) // NaN fails too
+        if (!std::isgreaterequal(walk_predicted_cover, 0.0)) // NaN fails too, without trapping
             throw Invalid_input(internal::concat("interpolation search: walk_predicted_cover ", walk_predicted_cover,
                                                  " must be >= 0 (+infinity: off)"));
         if (!(std::isfinite(lipschitz_slack) && lipschitz_slack >= 1.0))
