@@ -13,6 +13,7 @@
 //   noisy, Euclidean kernel:   max |f - d| <= tol0 + 2 sigma
 //   noisy, geodesic kernel:    99th percentile <= tol0 + 2 sigma, max <= tol0 + 6 sigma
 // (the geodesic kernel d = |x - p*| + g(p*, p) loses support off the surface above sampling holes).
+#include "build_helpers.h"
 #include "surface_test_helpers.h"
 
 #include <PCCD/Point_cloud_object.h>
@@ -94,8 +95,10 @@ double orientation_sign(const Object& object, const PCCD::Surface_sample& sample
 
 TEST_CASE("f approximates the exact signed distance within 2 spacings of the surface", "[surface]")
 {
-    for_each_test_shape([](const Test_shape& info, const auto& shape) {
-        for (std::size_t n : {4000u, 16000u})
+    // Debug builds check the smaller size only (the 16,000-point clouds are slow there).
+    const std::vector<std::size_t> sizes = pccd_test::by_build(std::vector<std::size_t>{4000, 16000}, std::vector<std::size_t>{4000});
+    for_each_test_shape([&](const Test_shape& info, const auto& shape) {
+        for (const std::size_t n : sizes)
             for (double noise : {0.0, 0.2})
               for (const PCCD::Surface_fit fit : {PCCD::Surface_fit::plane, PCCD::Surface_fit::sphere}) {
                 const auto sample = sample_shape(shape, n, noise, 7);
@@ -157,7 +160,8 @@ TEST_CASE("after orientation f is positive outside closed shapes and negative in
             const double tol = (0.05 + 0.25 * R * R / info.curvature_radius / s) * s + 6.0 * sigma;
             std::size_t wrong = 0, checked = 0;
             std::ostringstream cases;
-            for (const Query& q : queries_near(shape, 8000, 2.0 * s, 5)) {
+            // Debug builds: 4,000 queries per cloud instead of 8,000.
+            for (const Query& q : queries_near(shape, pccd_test::by_build<std::size_t>(8000, 4000), 2.0 * s, 5)) {
                 if (std::abs(q.signed_distance) <= tol) continue;
                 for (const auto& ev : {object.surface().evaluate(q.x), object.euclidean_surface().evaluate(q.x)}) {
                     if (!ev.defined()) continue;
@@ -173,8 +177,8 @@ TEST_CASE("after orientation f is positive outside closed shapes and negative in
                            << "; " << object.orientation().components << " components");
             // Enough queries outside the tolerance band to mean something: the band (6 sigma plus
             // the curvature term) holds most queries within 2 s of the noisy torus, which keeps
-            // 322 of them (0 wrong) with this sample.
-            CHECK(checked > 300);
+            // 322 of them (0 wrong) with this sample (of 8,000 queries; Debug builds ask half).
+            CHECK(checked > pccd_test::by_build<std::size_t>(300, 100));
             CHECK(wrong == 0);
             // Every stored normal points outward: the orientation found the outside.
             std::size_t inward = 0;
@@ -189,8 +193,9 @@ TEST_CASE("after orientation f is positive outside closed shapes and negative in
 
 TEST_CASE("the zero set found by bisection along normals lies on the true surface", "[surface]")
 {
+    // Debug builds: 8,000 points and 100 roots per shape instead of 16,000 and 300.
     for_each_test_shape([](const Test_shape& info, const auto& shape) {
-        const auto sample = sample_shape(shape, 16000, 0.0, 13);
+        const auto sample = sample_shape(shape, pccd_test::by_build<std::size_t>(16000, 8000), 0.0, 13);
         const Object object(columns(sample.points), identity, no_domain);
         const double s = object.cloud().mean_spacing();
         const double R = object.weight().support_radius();
@@ -212,7 +217,7 @@ TEST_CASE("the zero set found by bisection along normals lies on the true surfac
             return std::abs(shape.signed_distance(0.5 * (lo + hi)));
         };
         double worst_geodesic = 0.0, worst_euclidean = 0.0;
-        for (const Query& q : queries_near(shape, 300, 0.0, 17)) {
+        for (const Query& q : queries_near(shape, pccd_test::by_build<std::size_t>(300, 100), 0.0, 17)) {
             worst_geodesic = std::max(worst_geodesic, bisect(object.surface(), q));
             worst_euclidean = std::max(worst_euclidean, bisect(object.euclidean_surface(), q));
         }

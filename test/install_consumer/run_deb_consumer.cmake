@@ -1,11 +1,12 @@
 # ctest driver of install_deb_consumer: builds the libpccd-dev Debian package with CPack, unpacks it
 # into a temporary root (dpkg-deb -x, nothing is installed on the machine), checks its contents,
-# runs the packaged `pccd`, then builds and runs two consumers against the unpacked tree: the
-# CMake project of this directory with find_package(PCCD), and the umbrella-header program with
-# nothing but `pkg-config --cflags --libs pccd`.
+# runs the packaged `pccd` (when the build has the tool), then builds and runs two consumers
+# against the unpacked tree: the CMake project of this directory with find_package(PCCD), and the
+# umbrella-header program with nothing but `pkg-config --cflags --libs pccd`.
 #   cmake -DPCCD_BINARY_DIR=<build> -DWORK=<scratch dir> -DCONSUMER_SOURCE_DIR=<this dir>
 #         -DUMBRELLA_PROGRAM=<test/umbrella/umbrella_program.cpp> -DCMAKE_CXX_COMPILER=<c++>
-#         -DCPACK=<cpack> -DVERSION=<x.y.z> -P run_deb_consumer.cmake
+#         -DCPACK=<cpack> -DVERSION=<x.y.z> -DWITH_TOOL=<1 when the build has the pccd tool>
+#         -P run_deb_consumer.cmake
 function(run)
   cmake_parse_arguments(R "" "WHAT;DIR" "COMMAND" ${ARGN})
   execute_process(COMMAND ${R_COMMAND} WORKING_DIRECTORY "${R_DIR}" RESULT_VARIABLE rc OUTPUT_VARIABLE out
@@ -32,15 +33,21 @@ if(NOT RUN_OUTPUT MATCHES "^libpccd-dev")
 endif()
 set(root "${WORK}/root")
 run(WHAT "dpkg-deb -x" DIR "${WORK}" COMMAND dpkg-deb -x "${debs}" "${root}")
-foreach(file usr/include/PCCD/PCCD.h usr/include/PCCD/Point_cloud.h usr/share/cmake/PCCD/PCCDConfig.cmake
-             usr/share/cmake/PCCD/PCCDConfigVersion.cmake usr/share/pkgconfig/pccd.pc usr/bin/pccd)
+set(files usr/include/PCCD/PCCD.h usr/include/PCCD/Point_cloud.h usr/share/cmake/PCCD/PCCDConfig.cmake
+          usr/share/cmake/PCCD/PCCDConfigVersion.cmake usr/share/pkgconfig/pccd.pc)
+if(WITH_TOOL)
+  list(APPEND files usr/bin/pccd)
+endif()
+foreach(file IN LISTS files)
   if(NOT EXISTS "${root}/${file}")
     message(FATAL_ERROR "the package lacks /${file}")
   endif()
 endforeach()
-run(WHAT "packaged pccd --version" DIR "${WORK}" COMMAND "${root}/usr/bin/pccd" --version)
-if(NOT RUN_OUTPUT MATCHES "${VERSION}")
-  message(FATAL_ERROR "the packaged pccd does not report version ${VERSION}")
+if(WITH_TOOL)
+  run(WHAT "packaged pccd --version" DIR "${WORK}" COMMAND "${root}/usr/bin/pccd" --version)
+  if(NOT RUN_OUTPUT MATCHES "${VERSION}")
+    message(FATAL_ERROR "the packaged pccd does not report version ${VERSION}")
+  endif()
 endif()
 
 # find_package(PCCD) from the unpacked tree.
