@@ -12,6 +12,7 @@
 #include <PCCD/Random.h>
 #include <PCCD/Sampling/pose_generator.h>
 
+#include "build_helpers.h"
 #include "intersection_test_helpers.h"
 #include "surface_test_helpers.h"
 
@@ -68,11 +69,7 @@ std::vector<Pair> make_pairs(std::size_t count)
     return pairs;
 }
 
-#ifdef NDEBUG
-constexpr std::size_t pair_count = 60;
-#else
-constexpr std::size_t pair_count = 16;
-#endif
+constexpr std::size_t pair_count = pccd_test::by_build<std::size_t>(60, 16);
 
 /// Sample counts capped below the defaults so that the Debug sanitizer build stays fast; the
 /// property under test does not depend on them.

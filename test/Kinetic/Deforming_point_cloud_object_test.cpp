@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "../build_helpers.h"
 #include "../data_helpers.h"
 
 using Catch::Matchers::Contains;
@@ -28,14 +29,9 @@ static_assert(PCCD::CollisionObject<PCCD::Deforming_point_cloud_object<PCCD::Eig
 
 namespace {
 
-// Unoptimized (sanitizer) builds play fewer frames and times: the same checks, less work.
-#ifdef NDEBUG
-constexpr double contact_frame_rate = 10.0; // 21 frames over 2 s
-constexpr int random_times = 3;
-#else
-constexpr double contact_frame_rate = 5.0; // 11 frames over 2 s
-constexpr int random_times = 1;
-#endif
+// Debug (sanitizer) builds play fewer frames and times: the same checks, less work.
+constexpr double contact_frame_rate = pccd_test::by_build(10.0, 5.0); // 21 or 11 frames over 2 s
+constexpr int random_times = pccd_test::by_build(3, 1);
 
 /// The procedural contact scene (no data needed), small enough for a unit test.
 PCCD::Bunny_contact_scene small_scene(std::size_t points = 2000)

@@ -9,6 +9,7 @@
 #include <PCCD/Random.h>
 #include <PCCD/Sampling/pose_generator.h>
 
+#include "build_helpers.h"
 #include "intersection_test_helpers.h"
 
 #include <catch2/catch.hpp>
@@ -121,12 +122,8 @@ std::vector<PCCD::Intersection_result> answer_concurrently(const std::vector<Que
 
 } // namespace
 
-// 200 queries in optimized builds; 48 in unoptimized (Debug, sanitizer) builds, which are ~100x slower.
-#ifdef NDEBUG
-constexpr std::size_t query_count = 200;
-#else
-constexpr std::size_t query_count = 48;
-#endif
+// 200 queries in Release builds; 48 in Debug (sanitizer) builds, which are much slower.
+constexpr std::size_t query_count = pccd_test::by_build<std::size_t>(200, 48);
 
 TEST_CASE("Concurrent queries on shared objects equal the sequential answers bit for bit", "[threads][intersection]")
 {

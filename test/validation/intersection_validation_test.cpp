@@ -23,19 +23,15 @@
 #include <memory>
 #include <string>
 #include <vector>
+#include "build_helpers.h"
 #include "data_helpers.h"
 
 namespace {
 
 // Release builds run the full benchmark procedure (20 rotations per distance); Debug and
 // sanitizer builds a smaller smoke version of the same code (4 rotations), to stay within CI time.
-#ifdef NDEBUG
-constexpr std::size_t rotations = 20;
-constexpr std::size_t curve_poses = 20;
-#else
-constexpr std::size_t rotations = 4;
-constexpr std::size_t curve_poses = 4;
-#endif
+constexpr std::size_t rotations = pccd_test::by_build<std::size_t>(20, 4);
+constexpr std::size_t curve_poses = pccd_test::by_build<std::size_t>(20, 4);
 constexpr std::size_t cloud_size = 30000;
 
 struct Bunny {

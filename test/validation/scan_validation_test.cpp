@@ -9,6 +9,7 @@
 // A plain program (no Catch2) so that missing data is reported to ctest as skipped (exit code 77),
 // never as passed. Release runs 20 rotations per distance on both models; Debug and sanitizer builds
 // run a smoke version of the same code (bunny, 3 rotations) and assert the same bounds.
+#include "../build_helpers.h"
 #include "scan_validation.h"
 
 #include <cstdio>
@@ -18,15 +19,10 @@
 
 namespace {
 
-#ifdef NDEBUG
-constexpr std::size_t rotations = 20;
-constexpr std::size_t curve_poses = 12;
-const std::vector<std::string> models{"bunny00.off", "elephant.off"};
-#else
-constexpr std::size_t rotations = 3;
-constexpr std::size_t curve_poses = 3;
-const std::vector<std::string> models{"bunny00.off"};
-#endif
+constexpr std::size_t rotations = pccd_test::by_build<std::size_t>(20, 3);
+constexpr std::size_t curve_poses = pccd_test::by_build<std::size_t>(12, 3);
+const std::vector<std::string> models =
+    pccd_test::by_build(std::vector<std::string>{"bunny00.off", "elephant.off"}, std::vector<std::string>{"bunny00.off"});
 
 int failures = 0;
 
