@@ -3,12 +3,17 @@
 // verdict; the curve distances of intersection_points(). The table of doc/benchmarks.md "Accuracy
 // on scans" comes from
 //   build/benchmark/scan_accuracy --rotations 50
-// (test_scan_validation runs the same code with fewer poses and asserts the acceptance figures).
+// (test_scan_validation runs the same code with fewer poses and asserts the acceptance figures), and the
+// table of "Missed contacts" (CAD and mechanical parts at four densities) from
+//   build/benchmark/scan_accuracy --cad --rotations 50
+// (test_cad_validation runs it with fewer poses and models).
 #include "../test/validation/scan_validation.h"
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -41,7 +46,11 @@ int main(int argc, char** argv)
     double tolerance = 0.0;
     app.add_option("--contact-core", query_options.contact_core, "fraction of the domain a contact must lie within");
     app.add_option("--contact-tolerance", tolerance, "verification tolerance in sampling radii (default: automatic)");
-    bool no_domain = false, no_verify = false;
+    bool no_domain = false, no_verify = false, cad = false, no_certify = false;
+    std::vector<std::size_t> densities = pccd_test::cad_densities();
+    app.add_flag("--cad", cad, "CAD and mechanical parts at four densities (clean, noise 0.3, 0.6, 1 % outliers)");
+    app.add_option("--densities", densities, "with --cad: points per clean cloud");
+    app.add_flag("--no-certify", no_certify, "answer separate without the certification pass");
     app.add_flag("--no-domain", no_domain, "surfaces without a domain");
     app.add_flag("--no-verify", no_verify, "unverified contacts (the published methods)");
     CLI11_PARSE(app, argc, argv);
@@ -52,6 +61,42 @@ int main(int argc, char** argv)
     object_options.domain.enabled = !no_domain;
     object_options.surface_fit = fit == "plane" ? PCCD::Surface_fit::plane : PCCD::Surface_fit::sphere;
     query_options.verify_contacts = !no_verify;
+    query_options.certify_separation = !no_certify;
+    if (cad) {
+        if (app.count("--models") == 0) models = pccd_test::cad_models();
+        const auto cad_conditions = pccd_test::cad_conditions();
+        std::map<std::string, pccd_test::Scan_row> totals;
+        for (const std::string& file : models) {
+            pccd_test::Scan_model model = pccd_test::load_scan_model(data_dir, file, densities.front(), 2026);
+            const auto separations = pccd_test::exact_truth(model, rotations, pose_seed);
+            for (std::size_t density : densities) {
+                pccd_test::set_density(model, density, 2026);
+                const auto truth = pccd_test::reclassify(separations, model.clean_r);
+                for (std::size_t c = 0; c < cad_conditions.size(); ++c) {
+                    if (!conditions.empty() && std::find(conditions.begin(), conditions.end(), c) == conditions.end())
+                        continue;
+                    const auto cloud = pccd_test::make_scan_cloud(model, cad_conditions[c], 2026 + c, object_options);
+                    auto row = pccd_test::evaluate_first_hits(model, cad_conditions[c], cloud, truth, verbose, query_options);
+                    row.condition = std::to_string(density) + " " + cad_conditions[c].name;
+                    pccd_test::print_scan_row(row);
+                    pccd_test::add_to(totals[row.condition], row);
+                    std::fflush(stdout);
+                }
+            }
+        }
+        std::printf("\nper density and condition, %zu models, %zu rotations x 13 distances each\n", models.size(), rotations);
+        pccd_test::print_scan_table_header();
+        for (std::size_t density : densities)
+            for (std::size_t c = 0; c < cad_conditions.size(); ++c) {
+                const std::string name = std::to_string(density) + " " + cad_conditions[c].name;
+                if (!totals.count(name)) continue;
+                auto& t = totals[name];
+                t.model = "all";
+                t.condition = name;
+                pccd_test::print_scan_row(t);
+            }
+        return 0;
+    }
     const auto all = pccd_test::scan_conditions();
     if (conditions.empty())
         for (std::size_t i = 0; i < all.size(); ++i) conditions.push_back(i);

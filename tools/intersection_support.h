@@ -149,7 +149,7 @@ inline const std::vector<std::string>& counter_names()
         "f_evaluations",    "brackets_tried", "partner_candidates", "brackets_found",
         "search_steps",     "bisection_steps", "samples",           "candidate_points",
         "refinement_samples", "node_pairs",   "leaf_pairs",        "candidates_rejected",
-        "pending_node_pairs"};
+        "pending_node_pairs", "certification_passes", "unverified_crossings"};
     return names;
 }
 
@@ -157,7 +157,8 @@ inline std::vector<std::size_t> counter_values(const PCCD::Intersection_counters
 {
     return {c.f_evaluations, c.brackets_tried,   c.partner_candidates, c.brackets_found,
             c.search_steps,  c.bisection_steps,  c.samples,            c.candidate_points,
-            c.refinement_samples, c.node_pairs, c.leaf_pairs, c.candidates_rejected, c.pending_node_pairs};
+            c.refinement_samples, c.node_pairs, c.leaf_pairs, c.candidates_rejected, c.pending_node_pairs,
+            c.certification_passes, c.unverified_crossings};
 }
 
 /// Adds every counter to `out` under its name.

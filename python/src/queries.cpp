@@ -53,6 +53,7 @@ struct Query_arguments {
     bool verify_contacts = true;
     std::optional<double> contact_tolerance;
     double contact_core = PCCD::Intersection_options{}.contact_core;
+    bool certify_separation = true;
     std::optional<std::size_t> samples, min_samples, max_samples;
     std::optional<double> coverage_c;
     std::optional<std::size_t> partner_candidates;
@@ -65,7 +66,7 @@ struct Query_arguments {
 Query_parameters parameters(const Query_arguments& arguments)
 {
     const auto& [method, seed, epsilon, region, refinement, point_spacing, refinement_samples, max_f_evaluations,
-                 traversal, max_time_us, symmetric, verify_contacts, contact_tolerance, contact_core, samples, min_samples, max_samples,
+                 traversal, max_time_us, symmetric, verify_contacts, contact_tolerance, contact_core, certify_separation, samples, min_samples, max_samples,
                  coverage_c, partner_candidates, epsilon_factor, threads, first_index] = arguments;
     Query_parameters q;
     if (method == "rst")
@@ -102,6 +103,7 @@ Query_parameters parameters(const Query_arguments& arguments)
     o.verify_contacts = verify_contacts;
     o.contact_tolerance = contact_tolerance;
     o.contact_core = contact_core;
+    o.certify_separation = certify_separation;
     const auto isearch_only = [&](bool given, const char* name) {
         if (given && q.rst)
             throw py::value_error(std::string(name) + " is a parameter of method='isearch', not of method='rst'");
@@ -157,6 +159,7 @@ Query_arguments query_arguments(const py::kwargs& kwargs, bool batch, const char
         else if (is("verify_contacts")) read_argument(a.verify_contacts, value, function, key);
         else if (is("contact_tolerance")) read_argument(a.contact_tolerance, value, function, key);
         else if (is("contact_core")) read_argument(a.contact_core, value, function, key);
+        else if (is("certify_separation")) read_argument(a.certify_separation, value, function, key);
         else if (is("samples")) read_argument(a.samples, value, function, key);
         else if (is("min_samples")) read_argument(a.min_samples, value, function, key);
         else if (is("max_samples")) read_argument(a.max_samples, value, function, key);
@@ -268,6 +271,8 @@ py::dict counters_dict(const PCCD::Intersection_counters& c)
     d["leaf_pairs"] = c.leaf_pairs;
     d["candidates_rejected"] = c.candidates_rejected;
     d["pending_node_pairs"] = c.pending_node_pairs;
+    d["certification_passes"] = c.certification_passes;
+    d["unverified_crossings"] = c.unverified_crossings;
     return d;
 }
 
@@ -309,6 +314,10 @@ contact_tolerance : float, optional
     Tolerance of that verification; None (default): 0.05 times the smaller sampling radius.
 contact_core : float, optional
     Fraction of the domain radii a verified contact must lie within, in (0, 1] (default 0.6).
+certify_separation : bool, optional
+    Before answering 'separate', search the whole region as intersection_points does and answer
+    'intersecting' at a crossing the verification rejected (default True; see the manual, "When
+    PCCD says separate").
 samples, min_samples, partner_candidates : int, optional
     Interpolation search only: exact sample count per role, least sample count (default 200),
     partner candidates per bracketing sample (default 4).

@@ -193,7 +193,7 @@ def test_answers_and_result(shapes):
     assert set(hit.counters) == {
         "f_evaluations", "brackets_tried", "partner_candidates", "brackets_found", "search_steps",
         "bisection_steps", "samples", "candidate_points", "refinement_samples", "node_pairs", "leaf_pairs",
-        "candidates_rejected", "pending_node_pairs"}
+        "candidates_rejected", "pending_node_pairs", "certification_passes", "unverified_crossings"}
     assert hit.counters["f_evaluations"] > 0
     miss = pccd.do_intersect(sphere, APART, torus, None, method="rst")
     assert not miss.intersects and miss.status == "separate" and miss.points.shape == (0, 3)

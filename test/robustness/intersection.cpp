@@ -178,7 +178,10 @@ TEST_CASE("intersection: invalid options and policy fields are named", "[robustn
     // The extremes that are valid: a budget of one evaluation, the smallest policy values.
     const auto one = PCCD::do_intersect(s, id, s, shifted(3.0), {.max_f_evaluations = 1});
     CHECK(one.counters.f_evaluations <= 1);
-    const auto tiny = PCCD::do_intersect(s, id, s, near, {}, PCCD::Interpolation_search{.min_samples = 1, .max_samples = 1,
+    // (The cap of the walk itself: without the certification pass, which samples as
+    // intersection_points() does.)
+    const auto tiny = PCCD::do_intersect(s, id, s, near, {.certify_separation = false},
+                                         PCCD::Interpolation_search{.min_samples = 1, .max_samples = 1,
                                                                                         .annulus_outer = 1e-9,
                                                                                         .partner_candidates = 1});
     CHECK(tiny.counters.samples <= 2);

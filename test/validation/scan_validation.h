@@ -57,6 +57,22 @@ inline std::vector<Scan_condition> scan_conditions()
             {"1% outliers + noise 0.2", 1.0, 0.2, 0.01}};
 }
 
+/// The conditions of the validation on CAD and mechanical parts (at each density of
+/// cad_densities()): clean, noise 0.3 and 0.6 spacings, 1 % outliers.
+inline std::vector<Scan_condition> cad_conditions()
+{
+    return {{"clean", 1.0, 0.0, 0.0}, {"noise 0.3", 1.0, 0.3, 0.0}, {"noise 0.6", 1.0, 0.6, 0.0}, {"1% outliers", 1.0, 0.0, 0.01}};
+}
+
+/// Points per clean cloud of the CAD validation: from sparse to dense.
+inline std::vector<std::size_t> cad_densities() { return {500, 2000, 8000, 30000}; }
+
+/// Closed CAD and mechanical meshes of libcgal-demo with sharp edges, thin walls and handles.
+inline std::vector<std::string> cad_models()
+{
+    return {"anchor.off", "joint.off", "cheese.off", "helmet.off", "handle.off", "fandisk.off", "pipe.off", "itemb.off"};
+}
+
 /// A closed mesh, its exact reference, and the spacing and sampling radius of its clean cloud.
 struct Scan_model {
     std::string name;
@@ -188,6 +204,26 @@ inline std::vector<Posed_truth> exact_truth(const Scan_model& model, std::size_t
     return out;
 }
 
+/// The poses of `truth` classified again for another sampling radius r (the grazing band of a
+/// cloud of another density); the exact separations are kept.
+inline std::vector<Posed_truth> reclassify(std::vector<Posed_truth> truth, double r)
+{
+    for (Posed_truth& t : truth) t.cls = PCCD::classify_pose(t.separation, r);
+    return truth;
+}
+
+/// Sets the clean cloud of `model` to `points` points (seed `seed`): its spacing and sampling radius,
+/// which the conditions and the grazing band are relative to. The mesh and its exact reference stay.
+inline void set_density(Scan_model& model, std::size_t points, std::uint64_t seed)
+{
+    model.clean_points = points;
+    PCCD::Random_engine engine(seed);
+    const auto sample = PCCD::sample_triangle_mesh(model.mesh.vertices, model.mesh.triangles, points, engine);
+    const PCCD::Point_cloud<> cloud(sample.points);
+    model.clean_spacing = cloud.mean_spacing();
+    model.clean_r = PCCD::sampling_radius(cloud);
+}
+
 /// One row of the table: a model under a condition.
 struct Scan_row {
     std::string model, condition;
@@ -233,6 +269,46 @@ inline Scan_row evaluate_first_hits(const Scan_model& model, const Scan_conditio
     row.isearch_mean_us = t_is / double(std::max<std::size_t>(1, truth.size()));
     row.rst_mean_us = t_rst / double(std::max<std::size_t>(1, truth.size()));
     return row;
+}
+
+/// Adds the counts of `part` to `sum`.
+inline void add_to(Scan_row& sum, const Scan_row& part)
+{
+    for (auto [s, p] : {std::pair{&sum.isearch, &part.isearch}, std::pair{&sum.rst, &part.rst},
+                        std::pair{&sum.naive, &part.naive}}) {
+        s->intersecting += p->intersecting;
+        s->separated += p->separated;
+        s->grazing += p->grazing;
+        s->false_negatives += p->false_negatives;
+        s->false_positives += p->false_positives;
+        s->grazing_reported += p->grazing_reported;
+    }
+    sum.points += part.points;
+}
+
+/// One truth for both queries: on every pose of `truth` (grazing ones included), with the seeds of
+/// evaluate_first_hits(), the poses where intersection_points() finds a point, and among them those
+/// where do_intersect() with the same options says anything but intersecting. Both policies.
+inline std::pair<std::size_t, std::size_t> one_truth_violations(const Scan_cloud& cloud, const std::vector<Posed_truth>& truth)
+{
+    const PCCD::Point_cloud_object<>& o = *cloud.object;
+    std::size_t found = 0, violations = 0;
+    std::size_t k = 0;
+    for (const Posed_truth& t : truth) {
+        const PCCD::Intersection_options options{.seed = 1000 + k++};
+        const auto all = PCCD::intersection_points(o, t.pose.pose_a, o, t.pose.pose_b, options);
+        if (!all.points.empty()) {
+            ++found;
+            violations += !PCCD::do_intersect(o, t.pose.pose_a, o, t.pose.pose_b, options).intersects;
+        }
+        const auto all_rst = PCCD::intersection_points(o, t.pose.pose_a, o, t.pose.pose_b, options, PCCD::Randomized_sampling{});
+        if (!all_rst.points.empty()) {
+            ++found;
+            violations +=
+                !PCCD::do_intersect(o, t.pose.pose_a, o, t.pose.pose_b, options, PCCD::Randomized_sampling{}).intersects;
+        }
+    }
+    return {found, violations};
 }
 
 inline void print_scan_table_header()

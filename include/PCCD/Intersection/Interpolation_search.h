@@ -178,17 +178,30 @@ struct Interpolation_search {
     void run(const internal::Posed_object<A>& a, const internal::Posed_object<B>& b, const Intersection_options& options,
              double epsilon, internal::Query_state& state, double& closest) const
     {
-        if (options.traversal != Traversal::flat && state.sink.first_hit() && a.object->hierarchy().has_reach() &&
+        if (options.traversal != Traversal::flat && state.first_hit_search() && a.object->hierarchy().has_reach() &&
             b.object->hierarchy().has_reach()) {
             internal::walk_first_hit(*this, a, b, options, epsilon, state);
-        } else if (a.size() <= b.size()) { // the smaller object's points first; the second role if needed
+        } else {
+            run_roles(a, b, options, epsilon, state);
+        }
+        closest = state.closest_sample;
+    }
+
+    /// Both roles of the flat traversal and of intersection_points(): the smaller object's points
+    /// first, the other's with options.symmetric (in first-hit mode only if the first found
+    /// nothing). Also the complete search that certifies a "separate"
+    /// (Intersection_options::certify_separation).
+    template <class A, class B>
+    void run_roles(const internal::Posed_object<A>& a, const internal::Posed_object<B>& b,
+                   const Intersection_options& options, double epsilon, internal::Query_state& state) const
+    {
+        if (a.size() <= b.size()) {
             run_role(a, b, options, epsilon, state);
             if (options.symmetric && !state.stop()) run_role(b, a, options, epsilon, state);
         } else {
             run_role(b, a, options, epsilon, state);
             if (options.symmetric && !state.stop()) run_role(a, b, options, epsilon, state);
         }
-        closest = state.closest_sample;
     }
 
     /// The number of samples for a region of `region_points` points of a cloud with sampling radius
@@ -254,10 +267,10 @@ private:
             // The caps hold from the first draw (the region-size estimate below waits for 64 draws):
             // a fixed count, or max_samples for first-hit queries.
             if (samples && drawn >= *samples) return;
-            if (!samples && state.sink.first_hit() && drawn >= max_samples) return;
+            if (!samples && state.first_hit_search() && drawn >= max_samples) return;
             if (drawn >= 64 || region_sampler.region_size_known()) {
                 const std::size_t size = std::size_t(std::ceil(region_sampler.region_size()));
-                if (drawn >= sample_count(size, r, role.rho, state.sink.first_hit())) return;
+                if (drawn >= sample_count(size, r, role.rho, state.first_hit_search())) return;
             }
             if (!region_sampler.next(state.engine, i)) return;
             if (!role.sample(i)) return;

@@ -120,6 +120,20 @@ struct Intersection_options {
     /// and the search goes on past the few it rejects. With the sphere fit, 0.6 leaves no false
     /// contact in 13,000 poses for either policy; it costs about 1 % of curve coverage against 0.7.
     double contact_core = 0.6;
+    /// "Separate" is earned (default true; with verify_contacts only; doc/manual/intersection.md,
+    /// "When PCCD says separate"). Before a query answers separate, whatever its policy and
+    /// traversal: (1) the interpolation search samples the whole region within reach from the
+    /// query's seed, as intersection_points() does (do_intersect()'s walk and sample caps are
+    /// shortcuts to a first hit, not a complete search), so do_intersect() says intersecting
+    /// whenever intersection_points() with the same options finds a point; (2) if that search found
+    /// a crossing, i.e. two points of one cloud on a path of its graph on opposite sides of the
+    /// other surface, with both surfaces defined at the AIP between them, which the verification
+    /// rejected (no common zero within contact_tolerance
+    /// where the surfaces bend faster than the kernel resolves, at sharp edges, thin walls and in
+    /// sparse clouds), the answer is intersecting with that crossing as its point (kind
+    /// approximate; Intersection_counters::unverified_crossings = 1). false: the policy's own
+    /// search decides (faster near misses; misses contacts of sparse clouds and sharp parts).
+    bool certify_separation = true;
 };
 
 namespace internal {

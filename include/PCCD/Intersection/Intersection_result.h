@@ -92,6 +92,12 @@ struct Intersection_counters {
     /// Walked first-hit traversals: node pairs left unvisited when the walk stopped (at a contact,
     /// or when a budget ran out: with an `undecided` answer, how much was left to look at).
     std::size_t pending_node_pairs = 0;
+    /// "Separate" is earned (Intersection_options::certify_separation): passes of the complete
+    /// search run before a query could answer separate (0 or 1), and whether the answer rests on a
+    /// crossing the verification rejected (0 or 1: the result's point is that crossing, kind
+    /// approximate).
+    std::size_t certification_passes = 0;
+    std::size_t unverified_crossings = 0;
 
     Intersection_counters& operator+=(const Intersection_counters& o)
     {
@@ -108,6 +114,8 @@ struct Intersection_counters {
         node_pairs += o.node_pairs;
         leaf_pairs += o.leaf_pairs;
         pending_node_pairs += o.pending_node_pairs;
+        certification_passes += o.certification_passes;
+        unverified_crossings += o.unverified_crossings;
         return *this;
     }
     friend bool operator==(const Intersection_counters&, const Intersection_counters&) = default;

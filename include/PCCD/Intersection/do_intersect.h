@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include <PCCD/Error.h>
@@ -51,6 +52,41 @@ bool surfaces_may_touch(const Posed_object<A>& pa, const Posed_object<B>& pb, co
     return meet;
 }
 
+/// "Separate" is earned (Intersection_options::certify_separation): called when a query found no
+/// verified contact and its budget holds. Unless the policy's own search was already the complete
+/// interpolation search (intersection_points() with Interpolation_search), the interpolation search
+/// samples the whole region from the query's seed; then the first crossing the verification
+/// rejected at which both surfaces are defined (a cloud without a surface there, e.g. collinear
+/// points, crosses nothing) becomes the answer's point.
+template <class A, class B, class Policy>
+void certify_separation(const Posed_object<A>& pa, const Posed_object<B>& pb, const Intersection_options& options,
+                        const Policy& policy, double r_min, Query_state& state)
+{
+    constexpr bool isearch = std::is_same_v<Policy, Interpolation_search>;
+    if (!isearch || state.sink.first_hit()) {
+        const Interpolation_search search = [&] {
+            if constexpr (isearch) return policy;
+            else return Interpolation_search{};
+        }();
+        const double epsilon = isearch ? options.epsilon.value_or(search.default_epsilon(r_min))
+                                       : search.default_epsilon(r_min);
+        state.engine = Random_engine(state.seed);
+        state.search_all = true;
+        state.rejected_crossings.clear();
+        ++state.counters.certification_passes;
+        search.run_roles(pa, pb, options, epsilon, state);
+        state.search_all = !state.sink.first_hit();
+    }
+    for (const Intersection_point& crossing : state.rejected_crossings) {
+        if (state.sink.size() > 0 || state.out_of_budget()) break;
+        const auto both = evaluate_both(pa, pb, crossing.position, state);
+        if (!both) continue;
+        state.sink.add(Intersection_point{crossing.position, both->first.value, both->second.value,
+                                          Intersection_point_kind::approximate});
+        ++state.counters.unverified_crossings;
+    }
+}
+
 template <class A, class B, class Policy>
 Intersection_result run_query(const A& a, const Rigid_transform_3<double>& pose_a, const B& b,
                               const Rigid_transform_3<double>& pose_b, const Intersection_options& options,
@@ -89,6 +125,8 @@ Intersection_result run_query(const A& a, const Rigid_transform_3<double>& pose_
         };
     }
     policy.run(pa, pb, options, epsilon, state, result.closest_estimate);
+    if (options.verify_contacts && options.certify_separation && state.sink.size() == 0 && !state.out_of_budget())
+        certify_separation(pa, pb, options, policy, r_min, state);
 
     if (!first_hit && !options.verify_contacts && options.refinement != Refinement::none) {
         // Refine every approximate point; a point that does not converge stays an AIP.

@@ -134,12 +134,25 @@ struct Query_state {
     Intersection_visitor* visitor = nullptr;
     /// The posed object A of the query (to tell an evaluation of f_A from one of f_B).
     const void* posed_a = nullptr;
+    /// The query's seed (the engine's state at the start).
+    std::uint64_t seed;
+    /// Search as intersection_points() does (the whole sample of the region, no walk, no first-hit
+    /// caps) even though the sink stops at the first point: the certification pass of a first hit
+    /// (Intersection_options::certify_separation).
+    bool search_all;
+    /// The first crossings (AIPs between two points of one cloud on opposite sides of the other
+    /// surface) that the verification rejected in the current pass, at most max_rejected_crossings.
+    std::vector<Intersection_point> rejected_crossings;
+    static constexpr std::size_t max_rejected_crossings = 16;
 
-    Query_state(std::uint64_t seed, std::optional<std::size_t> max_f, bool first_hit, double spacing,
+    Query_state(std::uint64_t seed_, std::optional<std::size_t> max_f, bool first_hit, double spacing,
                 std::vector<Intersection_point>& out)
-        : budget(max_f), engine(seed), sink(first_hit, spacing, out)
+        : budget(max_f), engine(seed_), sink(first_hit, spacing, out), seed(seed_), search_all(!first_hit)
     {
     }
+
+    /// True while the search may take the first-hit shortcuts (the walk, the sample caps).
+    bool first_hit_search() const { return sink.first_hit() && !search_all; }
 
     /// True (and remembered) once the budget is spent.
     bool out_of_budget()
@@ -153,12 +166,15 @@ struct Query_state {
 
     /// A candidate point found by a policy: verified (when a verifier is set) and, if it passes,
     /// added to the sink. Returns true when a point was kept.
-    bool offer(const Intersection_point& candidate)
+    /// `crossing`: the candidate is an AIP of a bracket (a sign change of the other surface's f
+    /// between two points of one cloud), remembered in rejected_crossing when it is rejected.
+    bool offer(const Intersection_point& candidate, bool crossing = false)
     {
         if (!verifier) return sink.add(candidate);
         const std::optional<Intersection_point> contact = verifier(candidate);
         if (!contact) {
             ++counters.candidates_rejected;
+            if (crossing && rejected_crossings.size() < max_rejected_crossings) rejected_crossings.push_back(candidate);
             return false;
         }
         return sink.add(*contact);

@@ -221,7 +221,7 @@ struct Isearch_role {
                 state.visitor->bracket(pi_world, sampled.to_world.transform_point(sampled.position(j)));
             if (!path_source.path(i, j, path)) break; // no path within the bound (on the fly)
             if (auto found = search_path(sampled, tested, s_to_t, path, di, ej.value, epsilon, state))
-                state.offer(*found);
+                state.offer(*found, true);
             break;
         }
         return true;
