@@ -63,7 +63,7 @@ void certify_separation(const Posed_object<A>& pa, const Posed_object<B>& pb, co
                         const Policy& policy, double r_min, Query_state& state)
 {
     constexpr bool isearch = std::is_same_v<Policy, Interpolation_search>;
-    if (!isearch || state.sink.first_hit()) {
+    if (!state.region_searched && (!isearch || state.sink.first_hit())) {
         const Interpolation_search search = [&] {
             if constexpr (isearch) return policy;
             else return Interpolation_search{};
@@ -72,17 +72,13 @@ void certify_separation(const Posed_object<A>& pa, const Posed_object<B>& pb, co
                                        : search.default_epsilon(r_min);
         state.engine = Random_engine(state.seed);
         state.search_all = true;
-        state.rejected_crossings.clear();
+        state.rejected_crossing.reset();
         ++state.counters.certification_passes;
         search.run_roles(pa, pb, options, epsilon, state);
         state.search_all = !state.sink.first_hit();
     }
-    for (const Intersection_point& crossing : state.rejected_crossings) {
-        if (state.sink.size() > 0 || state.out_of_budget()) break;
-        const auto both = evaluate_both(pa, pb, crossing.position, state);
-        if (!both) continue;
-        state.sink.add(Intersection_point{crossing.position, both->first.value, both->second.value,
-                                          Intersection_point_kind::approximate});
+    if (state.sink.size() == 0 && state.rejected_crossing && !state.out_of_budget()) {
+        state.sink.add(*state.rejected_crossing);
         ++state.counters.unverified_crossings;
     }
 }
@@ -123,6 +119,13 @@ Intersection_result run_query(const A& a, const Rigid_transform_3<double>& pose_
         state.verifier = [&pa, &pb, &state, tolerance, reach, core](const Intersection_point& candidate) {
             return refine_by_projection(pa, pb, candidate.position, reach, tolerance, state, core);
         };
+        if (options.certify_separation)
+            state.crossing_check = [&pa, &pb, &state](const Eigen::Vector3d& x) -> std::optional<Intersection_point> {
+                if (state.out_of_budget()) return std::nullopt; // never overdraw the budget
+                const auto both = evaluate_both(pa, pb, x, state);
+                if (!both) return std::nullopt;
+                return Intersection_point{x, both->first.value, both->second.value, Intersection_point_kind::approximate};
+            };
     }
     policy.run(pa, pb, options, epsilon, state, result.closest_estimate);
     if (options.verify_contacts && options.certify_separation && state.sink.size() == 0 && !state.out_of_budget())

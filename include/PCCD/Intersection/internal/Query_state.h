@@ -136,14 +136,19 @@ struct Query_state {
     const void* posed_a = nullptr;
     /// The query's seed (the engine's state at the start).
     std::uint64_t seed;
+    /// The policy's search sampled every point of the region within reach once in each role (the
+    /// walk completed before a "separate"): no certification pass is needed.
+    bool region_searched = false;
     /// Search as intersection_points() does (the whole sample of the region, no walk, no first-hit
     /// caps) even though the sink stops at the first point: the certification pass of a first hit
     /// (Intersection_options::certify_separation).
     bool search_all;
-    /// The first crossings (AIPs between two points of one cloud on opposite sides of the other
-    /// surface) that the verification rejected in the current pass, at most max_rejected_crossings.
-    std::vector<Intersection_point> rejected_crossings;
-    static constexpr std::size_t max_rejected_crossings = 16;
+    /// Whether both surfaces are defined at a world point (set with the verifier; evaluations counted).
+    std::function<std::optional<Intersection_point>(const Eigen::Vector3d&)> crossing_check;
+    /// The first crossing (an AIP between two points of one cloud on opposite sides of the other
+    /// surface) that the verification rejected in the current pass and at which crossing_check found
+    /// both surfaces defined (with f_A and f_B there, kind approximate).
+    std::optional<Intersection_point> rejected_crossing;
 
     Query_state(std::uint64_t seed_, std::optional<std::size_t> max_f, bool first_hit, double spacing,
                 std::vector<Intersection_point>& out)
@@ -174,7 +179,7 @@ struct Query_state {
         const std::optional<Intersection_point> contact = verifier(candidate);
         if (!contact) {
             ++counters.candidates_rejected;
-            if (crossing && rejected_crossings.size() < max_rejected_crossings) rejected_crossings.push_back(candidate);
+            if (crossing && !rejected_crossing && crossing_check) rejected_crossing = crossing_check(candidate.position);
             return false;
         }
         return sink.add(*contact);

@@ -175,6 +175,9 @@ struct Isearch_role {
     /// The walk's covering of this role (Interpolation_search::walk_predicted_cover); none for the
     /// flat traversal's random draws.
     Covering_grid* cover = nullptr;
+    /// The walk's region points (hierarchy positions) that the covering skipped, when the walk is to
+    /// be completed before a "separate" (Intersection_options::certify_separation); none otherwise.
+    std::vector<std::uint32_t>* skipped = nullptr;
 
     Surface_evaluation evaluate_point(std::uint32_t i)
     {

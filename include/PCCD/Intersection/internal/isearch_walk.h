@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -79,7 +80,10 @@ bool sample_leaf(const Point_cloud_hierarchy& s, Point_cloud_hierarchy::Index ls
         if (!inside || !done.insert(k)) continue;
         ++role.state.counters.candidate_points;
         const Eigen::Vector3d local = ps.col(k).head<3>();
-        if (cover.covers(local)) continue;
+        if (cover.covers(local)) {
+            if (role.skipped) role.skipped->push_back(k);
+            continue;
+        }
         cover.add(local);
         if (!role.sample(s.order()[k]) || role.state.stop()) return false;
     }
@@ -100,7 +104,10 @@ bool sample_marked(const Point_cloud_hierarchy& s, Point_cloud_hierarchy::Index 
         if (!done.insert(k)) continue;
         ++role.state.counters.candidate_points;
         const Eigen::Vector3d local = s.ordered_points().col(k).head<3>();
-        if (cover.covers(local)) continue;
+        if (cover.covers(local)) {
+            if (role.skipped) role.skipped->push_back(k);
+            continue;
+        }
         cover.add(local);
         if (!role.sample(s.order()[k]) || role.state.stop()) return false;
     }
@@ -165,9 +172,17 @@ bool sample_leaf_pair(const Point_cloud_hierarchy& ha, Point_cloud_hierarchy::In
 /// either leaf within the reach of the other leaf's points are sampled at once in both roles
 /// (each point once per role; per role at most `samples` or max_samples). The walk stops at the
 /// first verified contact, when the budget is spent, or when both roles have their samples.
+///
+/// `complete` (a "separate" is to be certified, Intersection_options::certify_separation): when the
+/// walk ends without a contact, the region points its covering skipped are sampled too, so that
+/// every point of the region within reach has been sampled once in each role. Each sample's outcome
+/// depends on the point alone (predicted partners, the stored or computed path, the projection), so
+/// the walk then finds a contact whenever intersection_points(), which samples the same region, does.
+/// Returns true when that holds (or the query stopped), false when a role reached its sample cap
+/// first or the partners are drawn at random (the caller must then search the region in full).
 template <class Policy, class A, class B>
-void walk_first_hit(const Policy& policy, const Posed_object<A>& a, const Posed_object<B>& b,
-                    const Intersection_options& options, double epsilon, Query_state& state)
+bool walk_first_hit(const Policy& policy, const Posed_object<A>& a, const Posed_object<B>& b,
+                    const Intersection_options& options, double epsilon, Query_state& state, bool complete = false)
 {
     using Index = Point_cloud_hierarchy::Index;
     const bool use_a = options.symmetric || a.size() <= b.size();
@@ -179,6 +194,9 @@ void walk_first_hit(const Policy& policy, const Posed_object<A>& a, const Posed_
     const Point_cloud_hierarchy& hb = b.object->hierarchy();
     const Reach_rule rule_a{.scale = 1.0, .cap = a.support_radius()};
     const Reach_rule rule_b{.scale = 1.0, .cap = b.support_radius()};
+    // Completion needs each sample's outcome to depend on the point alone.
+    complete = complete && policy.partner_choice == std::remove_cvref_t<decltype(policy.partner_choice)>::predicted;
+    bool whole = !complete;
     with_path_source(policy, a, [&](const auto& source_a) {
         with_path_source(policy, b, [&](const auto& source_b) {
             Isearch_role<Policy, A, B, std::remove_cvref_t<decltype(source_a)>> role_a{policy, a, b, source_a, state, epsilon};
@@ -186,8 +204,13 @@ void walk_first_hit(const Policy& policy, const Posed_object<A>& a, const Posed_
             Position_set done_a, done_b;
             Covering_grid cover_a(std::max(policy.walk_cover * role_a.rho, tiny));
             Covering_grid cover_b(std::max(policy.walk_cover * role_b.rho, tiny));
+            std::vector<std::uint32_t> skipped_a, skipped_b;
             role_a.cover = &cover_a;
             role_b.cover = &cover_b;
+            if (complete) {
+                role_a.skipped = &skipped_a;
+                role_b.skipped = &skipped_b;
+            }
             const auto active = [&] { return (use_a && role_a.taken < cap) || (use_b && role_b.taken < cap); };
             // A deep overlap has contacts all over: a few random points within reach find one
             // sooner than the walk, which goes to the leaves first.
@@ -210,8 +233,23 @@ void walk_first_hit(const Policy& policy, const Posed_object<A>& a, const Posed_
             state.counters.node_pairs += c.node_pairs;
             state.counters.leaf_pairs += c.leaf_pairs;
             state.counters.pending_node_pairs += c.pending;
+            if (!complete || state.stop()) {
+                whole = true;
+                return;
+            }
+            // A role that reached its cap left region points unconsidered: not complete.
+            if ((use_a && role_a.taken >= cap) || (use_b && role_b.taken >= cap)) return;
+            role_a.cover = nullptr;
+            role_b.cover = nullptr;
+            ++state.counters.certification_passes;
+            for (const std::uint32_t k : skipped_a)
+                if (!role_a.sample(ha.order()[k]) || state.stop()) break;
+            for (const std::uint32_t k : skipped_b)
+                if (state.stop() || !role_b.sample(hb.order()[k])) break;
+            whole = true;
         });
     });
+    return whole;
 }
 
 } // namespace PCCD::internal
