@@ -51,10 +51,11 @@ int main(int argc, char** argv)
     app.add_option("--rotations", rotations, "rotations per distance");
     app.add_option("--points", points, "points of the clean cloud");
     app.add_option("--conditions", conditions, "indices of the conditions (default: all)");
-    bool rst = false;
+    bool rst = false, cad = false;
+    app.add_flag("--cad", cad, "the conditions of the CAD validation (clean, noise 0.3, 0.6, 1 % outliers)");
     app.add_flag("--rst", rst, "analyse the misses of RST instead of the interpolation search");
     CLI11_PARSE(app, argc, argv);
-    const auto all = pccd_test::scan_conditions();
+    const auto all = cad ? pccd_test::cad_conditions() : pccd_test::scan_conditions();
     if (conditions.empty())
         for (std::size_t i = 0; i < all.size(); ++i) conditions.push_back(i);
     std::map<std::string, std::size_t> tally;

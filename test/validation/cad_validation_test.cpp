@@ -30,20 +30,8 @@ const std::vector<std::string> models = pccd_test::by_build(
 const std::vector<std::size_t> densities =
     pccd_test::by_build(pccd_test::cad_densities(), std::vector<std::size_t>{500, 2000});
 
-int failures = 0;
-
-void check(bool ok, const std::string& what)
-{
-    std::printf("%s: %s\n", ok ? "ok  " : "FAIL", what.c_str());
-    if (!ok) ++failures;
-}
-
-std::string percent(std::size_t k, std::size_t n)
-{
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%zu/%zu = %.2f %%", k, n, n ? 100.0 * double(k) / double(n) : 0.0);
-    return buf;
-}
+using pccd_test::check;
+using pccd_test::percent;
 
 } // namespace
 
@@ -107,5 +95,5 @@ int main()
     check(one_truth_poses > 0 && one_truth_violations == 0,
           "one truth: do_intersect says intersecting whenever intersection_points finds a point (" +
               std::to_string(one_truth_violations) + " violations in " + std::to_string(one_truth_poses) + " poses)");
-    return failures ? 1 : 0;
+    return pccd_test::failures() ? 1 : 0;
 }

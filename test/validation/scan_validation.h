@@ -99,6 +99,18 @@ inline std::vector<Eigen::Vector3d> columns(const Eigen::Matrix3Xd& m)
     return out;
 }
 
+/// Sets the clean cloud of `model` to `points` points (seed `seed`): its spacing and sampling radius,
+/// which the conditions and the grazing band are relative to. The mesh and its exact reference stay.
+inline void set_density(Scan_model& model, std::size_t points, std::uint64_t seed)
+{
+    model.clean_points = points;
+    PCCD::Random_engine engine(seed);
+    const auto sample = PCCD::sample_triangle_mesh(model.mesh.vertices, model.mesh.triangles, points, engine);
+    const PCCD::Point_cloud<> cloud(sample.points);
+    model.clean_spacing = cloud.mean_spacing();
+    model.clean_r = PCCD::sampling_radius(cloud);
+}
+
 /// Loads `dir/file`, normalizes it into [-1, 1]^3 and measures its clean cloud of `points` points
 /// (seed `seed`).
 inline Scan_model load_scan_model(const std::string& dir, const std::string& file, std::size_t points, std::uint64_t seed)
@@ -111,12 +123,7 @@ inline Scan_model load_scan_model(const std::string& dir, const std::string& fil
     PCCD::normalize_to_unit_cube(v);
     for (std::size_t i = 0; i < m.mesh.vertices.size(); ++i) m.mesh.vertices[i] = v.col(Eigen::Index(i));
     m.exact = std::make_unique<PCCD::Exact_mesh>(m.mesh);
-    m.clean_points = points;
-    PCCD::Random_engine engine(seed);
-    const auto sample = PCCD::sample_triangle_mesh(m.mesh.vertices, m.mesh.triangles, points, engine);
-    const PCCD::Point_cloud<> cloud(sample.points);
-    m.clean_spacing = cloud.mean_spacing();
-    m.clean_r = PCCD::sampling_radius(cloud);
+    set_density(m, points, seed);
     return m;
 }
 
@@ -212,18 +219,6 @@ inline std::vector<Posed_truth> reclassify(std::vector<Posed_truth> truth, doubl
     return truth;
 }
 
-/// Sets the clean cloud of `model` to `points` points (seed `seed`): its spacing and sampling radius,
-/// which the conditions and the grazing band are relative to. The mesh and its exact reference stay.
-inline void set_density(Scan_model& model, std::size_t points, std::uint64_t seed)
-{
-    model.clean_points = points;
-    PCCD::Random_engine engine(seed);
-    const auto sample = PCCD::sample_triangle_mesh(model.mesh.vertices, model.mesh.triangles, points, engine);
-    const PCCD::Point_cloud<> cloud(sample.points);
-    model.clean_spacing = cloud.mean_spacing();
-    model.clean_r = PCCD::sampling_radius(cloud);
-}
-
 /// One row of the table: a model under a condition.
 struct Scan_row {
     std::string model, condition;
@@ -309,6 +304,28 @@ inline std::pair<std::size_t, std::size_t> one_truth_violations(const Scan_cloud
         }
     }
     return {found, violations};
+}
+
+/// The validation programs' assertions: prints "ok" or "FAIL" and the claim; failures() counts
+/// the failed ones (the exit code).
+inline int& failures()
+{
+    static int count = 0;
+    return count;
+}
+
+inline void check(bool ok, const std::string& what)
+{
+    std::printf("%s: %s\n", ok ? "ok  " : "FAIL", what.c_str());
+    if (!ok) ++failures();
+}
+
+/// "k/n = p %".
+inline std::string percent(std::size_t k, std::size_t n)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%zu/%zu = %.2f %%", k, n, n ? 100.0 * double(k) / double(n) : 0.0);
+    return buf;
 }
 
 inline void print_scan_table_header()

@@ -24,20 +24,8 @@ constexpr std::size_t curve_poses = pccd_test::by_build<std::size_t>(12, 3);
 const std::vector<std::string> models =
     pccd_test::by_build(std::vector<std::string>{"bunny00.off", "elephant.off"}, std::vector<std::string>{"bunny00.off"});
 
-int failures = 0;
-
-void check(bool ok, const std::string& what)
-{
-    std::printf("%s: %s\n", ok ? "ok  " : "FAIL", what.c_str());
-    if (!ok) ++failures;
-}
-
-std::string percent(std::size_t k, std::size_t n)
-{
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%zu/%zu = %.2f %%", k, n, n ? 100.0 * double(k) / double(n) : 0.0);
-    return buf;
-}
+using pccd_test::check;
+using pccd_test::percent;
 
 } // namespace
 
@@ -60,14 +48,7 @@ int main()
             const pccd_test::Scan_cloud cloud = pccd_test::make_scan_cloud(model, conditions[c], 2026 + c);
             const pccd_test::Scan_row row = pccd_test::evaluate_first_hits(model, conditions[c], cloud, truth, true);
             pccd_test::print_scan_row(row);
-            pccd_test::Scan_row& total = totals[conditions[c].name];
-            for (auto [sum, part] : {std::pair{&total.isearch, &row.isearch}, std::pair{&total.rst, &row.rst},
-                                     std::pair{&total.naive, &row.naive}}) {
-                sum->intersecting += part->intersecting;
-                sum->separated += part->separated;
-                sum->false_negatives += part->false_negatives;
-                sum->false_positives += part->false_positives;
-            }
+            pccd_test::add_to(totals[conditions[c].name], row);
             if (c == 0 || c == 2) {
                 const auto f = pccd_test::evaluate_curves(model, cloud, truth, curve_poses);
                 std::printf("%-14s %-24s curves: %zu poses, %zu points, distance median %.3f p95 %.3f max %.3f spacings "
@@ -114,5 +95,5 @@ int main()
             check(f.coverage >= 0.95, name + ": curve coverage " + std::to_string(f.coverage));
         }
     }
-    return failures ? 1 : 0;
+    return pccd_test::failures() ? 1 : 0;
 }

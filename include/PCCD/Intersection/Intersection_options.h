@@ -122,10 +122,12 @@ struct Intersection_options {
     double contact_core = 0.6;
     /// "Separate" is earned (default true; with verify_contacts only; doc/manual/intersection.md,
     /// "When PCCD says separate"). Before a query answers separate, whatever its policy and
-    /// traversal: (1) the interpolation search samples the whole region within reach from the
-    /// query's seed, as intersection_points() does (do_intersect()'s walk and sample caps are
-    /// shortcuts to a first hit, not a complete search), so do_intersect() says intersecting
-    /// whenever intersection_points() with the same options finds a point; (2) if that search found
+    /// traversal: (1) every point of the region within reach is sampled in each role — the walk of
+    /// the likelihood and depth-first traversals samples afterwards the points its covering skipped,
+    /// and where that is not possible (a sample cap reached, random partners, the flat traversal,
+    /// RST) the interpolation search samples the region from the query's seed as
+    /// intersection_points() does — so do_intersect() says intersecting whenever
+    /// intersection_points() with the same options finds a point; (2) if that search found
     /// a crossing, i.e. two points of one cloud on a path of its graph on opposite sides of the
     /// other surface, with both surfaces defined at the AIP between them, which the verification
     /// rejected (no common zero within contact_tolerance

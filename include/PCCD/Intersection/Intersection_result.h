@@ -92,10 +92,11 @@ struct Intersection_counters {
     /// Walked first-hit traversals: node pairs left unvisited when the walk stopped (at a contact,
     /// or when a budget ran out: with an `undecided` answer, how much was left to look at).
     std::size_t pending_node_pairs = 0;
-    /// "Separate" is earned (Intersection_options::certify_separation): passes of the complete
-    /// search run before a query could answer separate (0 or 1), and whether the answer rests on a
-    /// crossing the verification rejected (0 or 1: the result's point is that crossing, kind
-    /// approximate).
+    /// "Separate" is earned (Intersection_options::certify_separation): 1 when the query searched the
+    /// rest of the region within reach before it could answer separate (the walk's completion by
+    /// the points its covering skipped, or the complete interpolation search), else 0; and whether
+    /// the answer rests on a crossing the verification rejected (0 or 1: the result's point is that
+    /// crossing, kind approximate).
     std::size_t certification_passes = 0;
     std::size_t unverified_crossings = 0;
 

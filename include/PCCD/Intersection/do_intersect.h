@@ -120,10 +120,17 @@ Intersection_result run_query(const A& a, const Rigid_transform_3<double>& pose_
             return refine_by_projection(pa, pb, candidate.position, reach, tolerance, state, core);
         };
         if (options.certify_separation)
-            state.crossing_check = [&pa, &pb, &state](const Eigen::Vector3d& x) -> std::optional<Intersection_point> {
+            state.crossing_check = [&pa, &pb, &state, core](const Eigen::Vector3d& x) -> std::optional<Intersection_point> {
                 if (state.out_of_budget()) return std::nullopt; // never overdraw the budget
                 const auto both = evaluate_both(pa, pb, x, state);
-                if (!both) return std::nullopt;
+                if (!both || !(std::max(both->first.domain_fraction, both->second.domain_fraction) <= core))
+                    return std::nullopt;
+                // Both clouds hold a point within their sampling radius of it (no crossing through a
+                // lone outlier's wide domain).
+                const auto near = [&x](const auto& posed, const Surface_evaluation& e) {
+                    return (posed.from_world.transform_point(x) - posed.position(e.nearest)).norm() <= posed.sampling_radius();
+                };
+                if (!near(pa, both->first) || !near(pb, both->second)) return std::nullopt;
                 return Intersection_point{x, both->first.value, both->second.value, Intersection_point_kind::approximate};
             };
     }
