@@ -209,6 +209,13 @@ def test_answers_and_result(shapes):
     assert pccd.do_intersect(sphere, TOUCHING, torus, None, max_time_us=1e-3).status == "undecided"
     with pytest.raises(ValueError, match="traversal"):
         pccd.do_intersect(sphere, TOUCHING, torus, None, traversal="breadth")
+    # "Separate" is earned: the same answer as C++'s certify_separation; False is the policy alone.
+    certified = pccd.do_intersect(sphere, APART, torus, None)
+    assert certified.status == "separate" and certified.counters["unverified_crossings"] == 0
+    alone = pccd.do_intersect(sphere, APART, torus, None, certify_separation=False)
+    assert alone.status == "separate" and alone.counters["certification_passes"] == 0
+    with pytest.raises(TypeError, match="certify_separation"):
+        pccd.do_intersect(sphere, APART, torus, None, certify_separation="yes")
     with pytest.raises(ValueError, match="max_time_us"):
         pccd.do_intersect(sphere, TOUCHING, torus, None, max_time_us=-1.0)
 
