@@ -187,6 +187,12 @@ TEST_CASE("The walk is completed only when it found nothing, the flat traversal 
     const auto rst = PCCD::do_intersect(p.sphere, near, p.torus, identity, {}, PCCD::Randomized_sampling{});
     CHECK_FALSE(rst.intersects);
     CHECK(rst.counters.certification_passes == 1);
+    // Random partners: a sample's outcome depends on the engine, so the walk is not completed but
+    // followed by the complete search from the query's seed.
+    const auto random = PCCD::do_intersect(p.sphere, near, p.torus, identity, {},
+                                           PCCD::Interpolation_search{.partner_choice = PCCD::Partner_choice::random});
+    CHECK(random.counters.certification_passes == 1);
+    CHECK(random.status != PCCD::Intersection_status::undecided);
     // Without verification (the published methods) nothing is certified.
     const auto published = PCCD::do_intersect(p.sphere, near, p.torus, identity, {.verify_contacts = false});
     CHECK(published.counters.certification_passes == 0);

@@ -181,7 +181,7 @@ struct Interpolation_search {
         if (options.traversal != Traversal::flat && state.first_hit_search() && a.object->hierarchy().has_reach() &&
             b.object->hierarchy().has_reach()) {
             const bool certify = options.verify_contacts && options.certify_separation;
-            state.region_searched = internal::walk_first_hit(*this, a, b, options, epsilon, state, certify) && certify;
+            state.region_searched = internal::walk_first_hit(*this, a, b, options, epsilon, state, certify);
         } else {
             run_roles(a, b, options, epsilon, state);
         }

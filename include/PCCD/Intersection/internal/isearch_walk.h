@@ -178,8 +178,9 @@ bool sample_leaf_pair(const Point_cloud_hierarchy& ha, Point_cloud_hierarchy::In
 /// every point of the region within reach has been sampled once in each role. Each sample's outcome
 /// depends on the point alone (predicted partners, the stored or computed path, the projection), so
 /// the walk then finds a contact whenever intersection_points(), which samples the same region, does.
-/// Returns true when that holds (or the query stopped), false when a role reached its sample cap
-/// first or the partners are drawn at random (the caller must then search the region in full).
+/// Returns true when that holds or the query stopped; false otherwise: without `complete`, when a
+/// role reached its sample cap first, or when the partners are drawn at random (the caller must
+/// then search the region in full before a "separate").
 template <class Policy, class A, class B>
 bool walk_first_hit(const Policy& policy, const Posed_object<A>& a, const Posed_object<B>& b,
                     const Intersection_options& options, double epsilon, Query_state& state, bool complete = false)
@@ -196,7 +197,7 @@ bool walk_first_hit(const Policy& policy, const Posed_object<A>& a, const Posed_
     const Reach_rule rule_b{.scale = 1.0, .cap = b.support_radius()};
     // Completion needs each sample's outcome to depend on the point alone.
     complete = complete && policy.partner_choice == std::remove_cvref_t<decltype(policy.partner_choice)>::predicted;
-    bool whole = !complete;
+    bool whole = false;
     with_path_source(policy, a, [&](const auto& source_a) {
         with_path_source(policy, b, [&](const auto& source_b) {
             Isearch_role<Policy, A, B, std::remove_cvref_t<decltype(source_a)>> role_a{policy, a, b, source_a, state, epsilon};
@@ -234,7 +235,7 @@ bool walk_first_hit(const Policy& policy, const Posed_object<A>& a, const Posed_
             state.counters.leaf_pairs += c.leaf_pairs;
             state.counters.pending_node_pairs += c.pending;
             if (!complete || state.stop()) {
-                whole = true;
+                whole = state.stop();
                 return;
             }
             // A role that reached its cap left region points unconsidered: not complete.
