@@ -9,7 +9,7 @@ set(PCCD_DATA_FILES data/meshes/bunny00.off data/meshes/elephant.off data/meshes
     data/meshes/sphere.off data/meshes/knot1.off data/meshes/armadillo.off data/meshes/ChineseDragon-10kv.off
     # CAD and mechanical parts (sharp edges, thin walls, handles) for the contact validation
     data/meshes/anchor.off data/meshes/joint.off data/meshes/cheese.off data/meshes/helmet.off
-    data/meshes/handle.off data/meshes/fandisk.off data/meshes/pipe.off data/meshes/itemb.off)
+    data/meshes/handle.off data/meshes/fandisk.off data/meshes/pipe.off data/meshes/itemb.off data/meshes/part.off)
 set(PCCD_DATA_DIR "")
 set(PCCD_POINTS_DIR "")
 
@@ -30,7 +30,7 @@ endfunction()
 if(EXISTS "${PCCD_CGAL_DATA_ARCHIVE}")
   set(_pccd_data_root "${PROJECT_BINARY_DIR}/cgal-data")
   # The marker is the last mesh added, so that a build tree made before it extracts it too.
-  _pccd_extract(data/meshes/itemb.off ${PCCD_DATA_FILES})
+  _pccd_extract(data/meshes/part.off ${PCCD_DATA_FILES})
   if(EXISTS "${_pccd_data_root}/data/meshes/bunny00.off")
     set(PCCD_DATA_DIR "${_pccd_data_root}/data/meshes")
     message(STATUS "PCCD: scanned meshes from libcgal-demo in ${PCCD_DATA_DIR}")
