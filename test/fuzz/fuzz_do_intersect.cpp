@@ -275,6 +275,15 @@ void check_result(const PCCD::Intersection_result& r, const Query& q, const Obje
     // verification's steps count as refinement samples; without, the published behaviour.
     const bool verified = o.verify_contacts;
     const double tolerance = o.contact_tolerance.value_or(0.05 * r_min);
+    // "Separate" is earned (certify_separation): a search of the rest of the region (after which the
+    // policies' own sample caps and RST's counters no longer describe the query), and at most one
+    // crossing the verification rejected as the answer's point.
+    const bool certified = c.certification_passes > 0;
+    require(c.certification_passes <= 1 && c.unverified_crossings <= 1, "more than one certification or crossing");
+    if (certified || c.unverified_crossings > 0)
+        require(verified && o.certify_separation, "certification without verification or with certify_separation off");
+    if (c.unverified_crossings > 0)
+        require(r.intersects && r.points.size() == 1, "an unverified crossing that is not the one answer");
     if (q.first_hit) {
         require(r.points.size() <= 1, "do_intersect returned more than one point");
         if (!verified) require(c.refinement_samples == 0, "do_intersect refined");
@@ -285,6 +294,11 @@ void check_result(const PCCD::Intersection_result& r, const Query& q, const Obje
 
     for (const PCCD::Intersection_point& p : r.points) {
         require(p.position.allFinite(), "a non-finite intersection point");
+        if (verified && c.unverified_crossings > 0) {
+            require(p.kind == PCCD::Intersection_point_kind::approximate, "a crossing that is not approximate");
+            require(std::isfinite(p.f_a) && std::isfinite(p.f_b), "a crossing without both surfaces defined");
+            continue;
+        }
         if (verified) {
             require(p.kind == PCCD::Intersection_point_kind::refined, "a verified point that is not refined");
             require(std::max(std::abs(p.f_a), std::abs(p.f_b)) <= tolerance, "a verified point with |f| > tolerance");
@@ -316,7 +330,9 @@ void check_result(const PCCD::Intersection_result& r, const Query& q, const Obje
     }
 
     require(c.leaf_pairs <= c.node_pairs, "more leaf pairs than node pairs");
-    if (q.rst) {
+    if (q.rst && certified) {
+        require(c.samples <= q.sampling.max_samples + c.candidate_points, "RST and its certification drew too many samples");
+    } else if (q.rst) {
         require(std::isnan(r.closest_estimate) == false && r.closest_estimate >= 0.0,
                 "RST closest_estimate is NaN or negative");
         if (r.intersects) require(r.closest_estimate < epsilon, "RST intersects but closest_estimate >= epsilon");
@@ -335,7 +351,7 @@ void check_result(const PCCD::Intersection_result& r, const Query& q, const Obje
         if (c.f_evaluations == 0) require(std::isinf(r.closest_estimate), "interpolation search estimated without evaluations");
         // Per role at most `samples` when set, else max_samples for a first hit; intersection_points()
         // takes the full covering count, bounded by the region (samples <= candidate_points below).
-        if (q.isearch.samples || q.first_hit) {
+        if ((q.isearch.samples || q.first_hit) && !certified) {
             const std::size_t per_role = q.isearch.samples ? *q.isearch.samples : q.isearch.max_samples;
             require(c.samples <= 2 * per_role, "interpolation search drew more than its sample cap");
         }

@@ -122,6 +122,7 @@ Intersection_result run_query(const A& a, const Rigid_transform_3<double>& pose_
         if (options.certify_separation)
             state.crossing_check = [&pa, &pb, &state, core](const Eigen::Vector3d& x) -> std::optional<Intersection_point> {
                 if (state.out_of_budget()) return std::nullopt; // never overdraw the budget
+                ++state.counters.refinement_samples; // a step of the verification: two evaluations at most
                 const auto both = evaluate_both(pa, pb, x, state);
                 if (!both || !(std::max(both->first.domain_fraction, both->second.domain_fraction) <= core))
                     return std::nullopt;
