@@ -109,7 +109,7 @@ TEST_CASE("One truth: do_intersect says intersecting whenever intersection_point
     std::printf("one truth: %zu poses where intersection_points finds a point; do_intersect disagrees on %zu "
                 "(without the certification: %zu)\n",
                 found, violations, missed_without);
-    CHECK(found > 100);
+    CHECK(found > pccd_test::by_build<std::size_t>(100, 15)); // Debug: a fifth of the poses
     CHECK(violations == 0);
 }
 
@@ -153,8 +153,8 @@ TEST_CASE("A crossing the verification rejects answers intersecting, separate po
     std::printf("crossing rule: %zu crossing poses (%zu answered by a crossing; lost without the certification: "
                 "%zu), %zu separated (%zu certified by a search of the rest of the region)\n",
                 crossing, unverified, lost_without, separated, certified);
-    CHECK(crossing > 20);
-    CHECK(separated > 20);
+    CHECK(crossing > pccd_test::by_build<std::size_t>(20, 4)); // Debug: a quarter of the poses
+    CHECK(separated > pccd_test::by_build<std::size_t>(20, 5));
     CHECK(lost_without > crossing / 2); // the verification alone rejects them
     CHECK(unverified > crossing / 2);
 }
