@@ -56,8 +56,7 @@ bool surfaces_may_touch(const Posed_object<A>& pa, const Posed_object<B>& pb, co
 /// verified contact and its budget holds. Unless the policy's own search was already the complete
 /// interpolation search (intersection_points() with Interpolation_search), the interpolation search
 /// samples the whole region from the query's seed; then the first crossing the verification
-/// rejected at which both surfaces are defined (a cloud without a surface there, e.g. collinear
-/// points, crosses nothing) becomes the answer's point.
+/// rejected that passed Query_state::crossing_check becomes the answer's point.
 template <class A, class B, class Policy>
 void certify_separation(const Posed_object<A>& pa, const Posed_object<B>& pb, const Intersection_options& options,
                         const Policy& policy, double r_min, Query_state& state)
@@ -75,7 +74,6 @@ void certify_separation(const Posed_object<A>& pa, const Posed_object<B>& pb, co
         state.rejected_crossing.reset();
         ++state.counters.certification_passes;
         search.run_roles(pa, pb, options, epsilon, state);
-        state.search_all = !state.sink.first_hit();
     }
     if (state.sink.size() == 0 && state.rejected_crossing && !state.out_of_budget()) {
         state.sink.add(*state.rejected_crossing);

@@ -143,11 +143,13 @@ struct Query_state {
     /// caps) even though the sink stops at the first point: the certification pass of a first hit
     /// (Intersection_options::certify_separation).
     bool search_all;
-    /// Whether both surfaces are defined at a world point (set with the verifier; evaluations counted).
+    /// A rejected crossing at a world point as the answer's point (kind approximate, f_A and f_B
+    /// there), or nothing when a surface is undefined there, it lies outside a domain core, or a
+    /// cloud has no point within its sampling radius of it (set with the verifier; counted as a
+    /// verification step).
     std::function<std::optional<Intersection_point>(const Eigen::Vector3d&)> crossing_check;
     /// The first crossing (an AIP between two points of one cloud on opposite sides of the other
-    /// surface) that the verification rejected in the current pass and at which crossing_check found
-    /// both surfaces defined (with f_A and f_B there, kind approximate).
+    /// surface) that the verification rejected in the current pass and crossing_check accepted.
     std::optional<Intersection_point> rejected_crossing;
 
     Query_state(std::uint64_t seed_, std::optional<std::size_t> max_f, bool first_hit, double spacing,
