@@ -19,6 +19,7 @@
 
 // Concepts
 #include <PCCD/concepts/CollisionObject.h>
+#include <PCCD/concepts/LeafIntersector.h>
 #include <PCCD/concepts/Flightplan.h>
 #include <PCCD/concepts/KineticPrimitive.h>
 #include <PCCD/concepts/PairObserver.h>

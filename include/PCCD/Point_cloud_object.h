@@ -407,5 +407,5 @@ private:
 } // namespace PCCD
 
 // The preprocessing pipeline, and the definitions of save() and load() (the object file format).
-#include <PCCD/internal/Point_cloud_object_preprocessing.h>
-#include <PCCD/internal/Point_cloud_object_file.h>
+#include <PCCD/Point_cloud_object_preprocessing.h>
+#include <PCCD/Point_cloud_object_file.h>

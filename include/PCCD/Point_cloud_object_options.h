@@ -12,14 +12,10 @@
 #include <optional>
 #include <vector>
 
-#include <PCCD/Hierarchy/Point_cloud_hierarchy.h>
-#include <PCCD/Proximity_graph/knn_graph.h>
-#include <PCCD/Proximity_graph/sphere_of_influence_graph.h>
-#include <PCCD/Surface/Surface_fit.h>
-#include <PCCD/Surface/bandwidth.h>
-#include <PCCD/Surface/outliers.h>
-#include <PCCD/Surface/surface_domain.h>
-#include <PCCD/sampling_radius.h>
+#include <PCCD/Hierarchy/Point_cloud_hierarchy_options.h>
+#include <PCCD/Proximity_graph/graph_options.h>
+#include <PCCD/Surface/surface_options.h>
+#include <PCCD/sampling_radius_options.h>
 
 namespace PCCD {
 

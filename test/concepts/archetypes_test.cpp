@@ -27,6 +27,7 @@
 #include <PCCD/Surface/WLS_surface.h>
 #include <PCCD/Surface/estimate_normals.h>
 #include <PCCD/concepts/CollisionObject.h>
+#include <PCCD/concepts/LeafIntersector.h>
 #include <PCCD/concepts/PairObserver.h>
 #include <PCCD/concepts/PathSource.h>
 #include <PCCD/Hierarchy/reach_traversal.h>
@@ -316,8 +317,8 @@ struct Leaf_intersector {
     void check() const {}
     double default_epsilon(double r) const { return 0.05 * r; }
     template <class A, class B>
-    void run(const PCCD::internal::Posed_object<A>& a, const PCCD::internal::Posed_object<B>& b,
-             const PCCD::Intersection_options&, double epsilon, PCCD::internal::Query_state& state, double& closest) const
+    void run(const PCCD::Posed_object<A>& a, const PCCD::Posed_object<B>& b,
+             const PCCD::Intersection_options&, double epsilon, PCCD::Query_state& state, double& closest) const
     {
         closest = std::numeric_limits<double>::quiet_NaN();
         for (std::uint32_t i = 0; i < a.size() && !state.stop(); ++i) {
@@ -338,8 +339,8 @@ struct With_numeric_name {
     void check() const {}
     double default_epsilon(double r) const { return r; }
     template <class A, class B>
-    void run(const PCCD::internal::Posed_object<A>&, const PCCD::internal::Posed_object<B>&,
-             const PCCD::Intersection_options&, double, PCCD::internal::Query_state&, double&) const;
+    void run(const PCCD::Posed_object<A>&, const PCCD::Posed_object<B>&,
+             const PCCD::Intersection_options&, double, PCCD::Query_state&, double&) const;
 };
 
 /// Exactly what PathSource requires.

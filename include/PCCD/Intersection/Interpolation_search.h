@@ -23,7 +23,7 @@
 #include <PCCD/Hierarchy/reach_traversal.h>
 #include <PCCD/Intersection/Intersection_options.h>
 #include <PCCD/Intersection/Intersection_result.h>
-#include <PCCD/Intersection/internal/Query_state.h>
+#include <PCCD/Intersection/Query_state.h>
 #include <PCCD/Intersection/internal/overlap_region.h>
 #include <PCCD/Intersection/internal/isearch_role.h>
 #include <PCCD/Intersection/internal/isearch_walk.h>
@@ -175,8 +175,8 @@ struct Interpolation_search {
     /// the other surface passes to the points sampled (at a cloud point p, f_S(p) is about 0, so
     /// this estimates max(|f_A|, |f_B|) there). An undecided answer reports what it saw so far.
     template <class A, class B>
-    void run(const internal::Posed_object<A>& a, const internal::Posed_object<B>& b, const Intersection_options& options,
-             double epsilon, internal::Query_state& state, double& closest) const
+    void run(const Posed_object<A>& a, const Posed_object<B>& b, const Intersection_options& options,
+             double epsilon, Query_state& state, double& closest) const
     {
         if (options.traversal != Traversal::flat && state.first_hit_search() && a.object->hierarchy().has_reach() &&
             b.object->hierarchy().has_reach()) {
@@ -193,8 +193,8 @@ struct Interpolation_search {
     /// nothing). Also the complete search that certifies a "separate"
     /// (Intersection_options::certify_separation).
     template <class A, class B>
-    void run_roles(const internal::Posed_object<A>& a, const internal::Posed_object<B>& b,
-                   const Intersection_options& options, double epsilon, internal::Query_state& state) const
+    void run_roles(const Posed_object<A>& a, const Posed_object<B>& b,
+                   const Intersection_options& options, double epsilon, Query_state& state) const
     {
         if (a.size() <= b.size()) {
             run_role(a, b, options, epsilon, state);
@@ -224,8 +224,8 @@ struct Interpolation_search {
     /// (world coordinates); returns when the sink is done, the budget is spent or the samples are
     /// exhausted. \pre epsilon > 0
     template <class S, class T>
-    void run_role(const internal::Posed_object<S>& sampled, const internal::Posed_object<T>& tested,
-                  const Intersection_options& options, double epsilon, internal::Query_state& state) const
+    void run_role(const Posed_object<S>& sampled, const Posed_object<T>& tested,
+                  const Intersection_options& options, double epsilon, Query_state& state) const
     {
         const Rigid_transform_3<double> s_to_t = tested.from_world * sampled.to_world;
         const Point_cloud_hierarchy& hs = sampled.object->hierarchy();
@@ -246,8 +246,8 @@ struct Interpolation_search {
 private:
     /// run_role() with its region sampler: the paths of brackets from the stored map or on the fly.
     template <class S, class T, class Sampler>
-    void run_role_paths(const internal::Posed_object<S>& sampled, const internal::Posed_object<T>& tested,
-                        Sampler& sampler, double epsilon, internal::Query_state& state) const
+    void run_role_paths(const Posed_object<S>& sampled, const Posed_object<T>& tested,
+                        Sampler& sampler, double epsilon, Query_state& state) const
     {
         internal::with_path_source(*this, sampled,
                                    [&](const auto& source) { run_role_with(sampled, tested, sampler, epsilon, state, source); });
@@ -255,8 +255,8 @@ private:
 
     /// run_role() with the paths of brackets read from `path_source`.
     template <class S, class T, class Sampler, PathSource Paths>
-    void run_role_with(const internal::Posed_object<S>& sampled, const internal::Posed_object<T>& tested,
-                       Sampler& region_sampler, double epsilon, internal::Query_state& state,
+    void run_role_with(const Posed_object<S>& sampled, const Posed_object<T>& tested,
+                       Sampler& region_sampler, double epsilon, Query_state& state,
                        const Paths& path_source) const
     {
         internal::Isearch_role<Interpolation_search, S, T, Paths> role{*this, sampled, tested, path_source, state, epsilon};

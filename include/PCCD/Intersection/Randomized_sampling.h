@@ -15,7 +15,7 @@
 #include <PCCD/Error.h>
 #include <PCCD/Intersection/Intersection_options.h>
 #include <PCCD/Intersection/Intersection_result.h>
-#include <PCCD/Intersection/internal/Query_state.h>
+#include <PCCD/Intersection/Query_state.h>
 #include <PCCD/Intersection/internal/overlap_region.h>
 #include <PCCD/Random.h>
 
@@ -61,8 +61,8 @@ struct Randomized_sampling {
 
     /// The query (both objects posed; points go to state.sink).
     template <class A, class B>
-    void run(const internal::Posed_object<A>& a, const internal::Posed_object<B>& b, const Intersection_options& options,
-             double epsilon, internal::Query_state& state, double& closest) const
+    void run(const Posed_object<A>& a, const Posed_object<B>& b, const Intersection_options& options,
+             double epsilon, Query_state& state, double& closest) const
     {
         const Rigid_transform_3<double> a_to_b = b.from_world * a.to_world;
         const std::vector<internal::Sampling_box> boxes = internal::sampling_boxes(

@@ -18,11 +18,12 @@
 #include <PCCD/Intersection/Intersection_options.h>
 #include <PCCD/Intersection/Intersection_result.h>
 #include <PCCD/Intersection/Randomized_sampling.h>
-#include <PCCD/Intersection/internal/Query_state.h>
+#include <PCCD/Intersection/Query_state.h>
 #include <PCCD/Intersection/refinement.h>
 #include <PCCD/Rigid_transform_3.h>
 #include <PCCD/internal/timing.h>
 #include <PCCD/concepts/CollisionObject.h>
+#include <PCCD/concepts/LeafIntersector.h>
 
 namespace PCCD {
 namespace internal {

@@ -20,6 +20,7 @@
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Rigid_transform_3.h>
 #include <PCCD/concepts/CollisionObject.h>
+#include <PCCD/concepts/LeafIntersector.h>
 #include <PCCD/internal/parallel.h>
 
 namespace PCCD {

@@ -14,7 +14,7 @@
 #include <Eigen/LU>
 
 #include <PCCD/Intersection/Intersection_result.h>
-#include <PCCD/Intersection/internal/Query_state.h>
+#include <PCCD/Intersection/Query_state.h>
 #include <PCCD/Random.h>
 
 namespace PCCD::internal {

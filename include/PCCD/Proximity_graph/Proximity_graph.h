@@ -17,6 +17,7 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <PCCD/Error.h>
+#include <PCCD/Proximity_graph/graph_options.h>
 #include <PCCD/concepts/ProximityGraph.h>
 
 namespace PCCD {
@@ -29,15 +30,6 @@ struct Proximity_edge {
     /// the surface's geodesic distances but may still be walked by the interpolation search.
     bool is_virtual = false;
     friend bool operator==(const Proximity_edge&, const Proximity_edge&) = default;
-};
-
-/// How a proximity graph was built.
-enum class Graph_kind : std::uint8_t {
-    /// Symmetric k-nearest-neighbour graph: (i, j) when j is among the k nearest of i or vice versa.
-    knn = 0,
-    /// (r-)sphere-of-influence graph: (i, j) when |p_i - p_j| <= d_i + d_j, d_i the distance of p_i
-    /// to its r-th nearest neighbour (r = 1: the plain SIG).
-    sphere_of_influence = 1,
 };
 
 /// "knn", "sig" or "r-sig" (the name used by the pccd tool).

@@ -12,24 +12,13 @@
 #include <PCCD/Error.h>
 #include <PCCD/Point_cloud.h>
 #include <PCCD/Proximity_graph/Proximity_graph.h>
+#include <PCCD/Proximity_graph/graph_options.h>
 #include <PCCD/Proximity_graph/internal/graph_construction.h>
 #include <PCCD/Proximity_graph/prune_long_edges.h>
 #include <PCCD/concepts/PointCloudKernel.h>
 #include <PCCD/internal/parallel.h>
 
 namespace PCCD {
-
-/// Options of knn_graph().
-struct Knn_graph_options {
-    /// Number of nearest neighbours each point is joined to. Default 8. Must be >= 1.
-    unsigned k = 8;
-    /// The long-edge test marking edges virtual (default factor 4).
-    Long_edge_options long_edges = {};
-    /// Worker threads, >= 1. Unset (default): all available threads; as a stage of
-    /// Point_cloud_object, the object's `threads`. Ignored without TBB. The result does not depend
-    /// on it.
-    std::optional<unsigned> threads = std::nullopt;
-};
 
 /// Builds the symmetric k-NN graph of `cloud`: i and j are joined when j is among the k nearest
 /// other positions of i or i among those of j (ties broken by index); then long edges are marked

@@ -14,25 +14,10 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <PCCD/Error.h>
+#include <PCCD/Proximity_graph/graph_options.h>
 #include <PCCD/concepts/ProximityGraph.h>
 
 namespace PCCD {
-
-/// Options of the long-edge test.
-struct Long_edge_options {
-    /// An edge (u, v) of length l is long when l > factor * min(S_u, S_v). The local scale S_x is a
-    /// two-step median: m_x = median length of the positive-length edges at x, then S_x = median
-    /// of m_y over x and its neighbours y. The second median keeps one clump of random points
-    /// (whose own edges are all short) from flagging its ordinary edges, and makes an isolated
-    /// point or a sparse bridge between clusters take the scale of the surface it hangs on, so its
-    /// edges to that surface come out long. Default 4: on area-uniform samples of the Stanford
-    /// bunny (10^5 points, r-SIG with r = 3) it marks 12 of 577,000 edges clean and 7 with noise of
-    /// 0.3 spacings, and the r-SIG stays one component; factor 3 marked 94 and cut 8 points off in 2
-    /// fragments; an edge from a surface to an isolated outlier or across a bridge of sparse points
-    /// is typically 10 times the scale (doc/manual/graphs.md). +infinity turns the test off. Must be
-    /// > 0 and not NaN.
-    double factor = 4.0;
-};
 
 namespace internal {
 

@@ -11,27 +11,13 @@
 #include <PCCD/Error.h>
 #include <PCCD/Point_cloud.h>
 #include <PCCD/Proximity_graph/Proximity_graph.h>
+#include <PCCD/Proximity_graph/graph_options.h>
 #include <PCCD/Proximity_graph/internal/graph_construction.h>
 #include <PCCD/Proximity_graph/prune_long_edges.h>
 #include <PCCD/concepts/PointCloudKernel.h>
 #include <PCCD/internal/parallel.h>
 
 namespace PCCD {
-
-/// Options of sphere_of_influence_graph().
-struct Sphere_of_influence_graph_options {
-    /// The radius of influence of a point is its distance to its r-th nearest neighbour (r = 1: the
-    /// plain SIG). Default 3, the smaller of the two values the paper recommends: on noisy bunny
-    /// scans r = 3 already gives one component per piece while r = 4 costs a third more edges and
-    /// CPSP time (doc/manual/graphs.md). Must be >= 1.
-    unsigned r = 3;
-    /// The long-edge test marking edges virtual (default factor 4).
-    Long_edge_options long_edges = {};
-    /// Worker threads, >= 1. Unset (default): all available threads; as a stage of
-    /// Point_cloud_object, the object's `threads`. Ignored without TBB. The result does not depend
-    /// on it.
-    std::optional<unsigned> threads = std::nullopt;
-};
 
 /// Builds the r-SIG of `cloud`: points i and j are joined when |p_i - p_j| <= d_i + d_j, d_i the
 /// distance of p_i to its r-th nearest neighbour; then long edges are marked virtual

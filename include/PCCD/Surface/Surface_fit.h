@@ -10,23 +10,10 @@
 
 #include <Eigen/Core>
 
+#include <PCCD/Surface/surface_options.h>
 #include <PCCD/internal/finite.h>
 
 namespace PCCD {
-
-/// The local shape WLS_surface fits at each evaluation point x.
-enum class Surface_fit : std::uint8_t {
-    /// The published surface: the plane through the weighted mean a(x) normal to the smallest
-    /// eigenvector n(x) of the weighted covariance; f(x) = n(x) . (x - a(x)). On a curved surface
-    /// a(x) lies on the concave side, so the zero set is shrunk by about kappa h^2 / 2.
-    plane = 0,
-    /// An algebraic sphere (a plane in the limit of zero curvature) fitted to the weighted points
-    /// and their oriented normals; f(x) = the signed distance from x to that sphere, n(x) = its
-    /// gradient direction at x. Exact on spheres and planes; where the sphere is not determined
-    /// (no spread of the normals' positions, or the fitted normals disagree with the nearest
-    /// point's), the plane answers.
-    sphere = 1,
-};
 
 /// "plane" or "sphere".
 inline const char* to_string(Surface_fit fit)

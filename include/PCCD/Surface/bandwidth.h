@@ -9,34 +9,9 @@
 
 #include <PCCD/Error.h>
 #include <PCCD/Surface/Gaussian_weight.h>
+#include <PCCD/Surface/surface_options.h>
 
 namespace PCCD {
-
-/// How the Gaussian kernel of the surface is chosen. Defaults measured in doc/manual/surface.md
-/// ("Choosing eta and theta_eps").
-struct Bandwidth_options {
-    /// eta: the support radius in units of the sampling radius r(P), independent of the sampling
-    /// density. Default 3. Must be finite and > 0.
-    double eta = 3.0;
-    /// theta_eps: weights below it are ignored. Default 1e-2. Must lie in (0, 1).
-    double theta_eps = 1e-2;
-    /// A bandwidth h given by the user (length unit of the cloud), used as it is: eta, r(P) and
-    /// noise_factor are then ignored. Unset (default): automatic, eta r(P) / sqrt(-ln theta_eps).
-    /// When set: finite and > 0.
-    std::optional<double> bandwidth = std::nullopt;
-    /// Noise-aware support (automatic bandwidth only): the support radius is at least
-    /// noise_factor * sigma, sigma the cloud's noise estimate (noise_estimate()), so that the fit
-    /// keeps averaging over enough points when the noise is heavy. Default 15, measured with the
-    /// sphere fit (Surface_fit::sphere, Point_cloud_object's default) on noisy area samples of the
-    /// bunny and the elephant (doc/benchmarks.md "Accuracy on scans"): with sigma = 0.6 mean spacings
-    /// it widens the support from eta r(P) (8 spacings) to about 10 spacings and brings the curves'
-    /// median distance from 0.32 to 0.28 spacings and their p95 from 1.15 to 0.98 (bunny); 20 is
-    /// worse again (the sphere no longer follows the shape). Up to sigma = 0.3 spacings the rule
-    /// leaves eta r(P) alone. With the plane fit, whose shrinkage on curved parts grows with the
-    /// kernel, 10 is the better value. At sigma = 1 spacing eta r(P) leaves about 3 % of the surface
-    /// with flipped normals, a support of about 4 r(P) 0.1 %. 0 disables it. Must be finite and >= 0.
-    double noise_factor = 15.0;
-};
 
 namespace internal {
 

@@ -14,35 +14,9 @@
 
 #include <PCCD/Error.h>
 #include <PCCD/Surface/local_spacing.h>
+#include <PCCD/Surface/surface_options.h>
 
 namespace PCCD {
-
-/// Options of find_outliers() and of Point_cloud_object's outlier removal.
-struct Outlier_options {
-    /// Remove the outliers before building the surface (Point_cloud_object). Default true.
-    bool remove = true;
-    /// k of the local spacing l_i (distance to the k-th nearest other point). Default 6. >= 1.
-    unsigned neighbors = 6;
-    /// Point i is an outlier when l_i > ratio * median of l_j over its k nearest neighbours j (the
-    /// upper median for even k). Default 4: measured on uniform samples of a sphere, a torus and a
-    /// plane patch, l_i / median(l_j) stays at 1.6-2.2, and at 2.3-3.1 across a 16-fold step in
-    /// density. A single stray point is caught by this test once it is about 12 spacings off a
-    /// plane; stray points closer to the surface stay and act as noise, which the fit and the
-    /// verified contacts absorb. Must be finite and > 1.
-    double ratio = 4.0;
-    /// Point i is also an outlier when l_i > global_ratio * the median of l over the whole cloud:
-    /// the local test alone misses stray points whose nearest neighbours are other stray points (a
-    /// scatter of outliers away from the surface). Default 8: a local spacing 8 times the typical
-    /// one. Measured on a plane patch with one half sparser: 8 times fewer points there flag nothing,
-    /// 16 times fewer flag 1-2 legitimate points of the sparse half on some seeds; set it higher, or
-    /// to 0 to disable this test, for scans whose density varies more than 8-fold. Must be finite and
-    /// 0 or > 1.
-    double global_ratio = 8.0;
-    /// Worker threads, >= 1. Unset (default): all available threads; as a stage of
-    /// Point_cloud_object, the object's `threads`. Ignored without TBB. The result does not depend
-    /// on it.
-    std::optional<unsigned> threads = std::nullopt;
-};
 
 namespace internal {
 

@@ -18,28 +18,10 @@
 #include <PCCD/Error.h>
 #include <PCCD/Point_cloud.h>
 #include <PCCD/Surface/local_spacing.h>
+#include <PCCD/Surface/surface_options.h>
 #include <PCCD/concepts/PointCloudKernel.h>
 
 namespace PCCD {
-
-/// Options of surface_domain_radii(). Defaults measured in doc/benchmarks.md "Accuracy on scans".
-struct Surface_domain_options {
-    /// k: the local spacing l_i of point i is its distance to its k-th nearest other point. Default
-    /// 6 (on a uniformly sampled surface l_i is then about 2.7 mean spacings, a little above the
-    /// 0.99-quantile sampling radius r(P), so 99 % of the surface lies within l of a point). Must
-    /// be >= 1.
-    unsigned neighbors = 6;
-    /// D_i = factor * l_i. Default 1. Must be finite and > 0. +infinity is not allowed here; use
-    /// `enabled = false` for a surface without a domain.
-    double factor = 1.0;
-    /// False: no domain (f is defined wherever the kernel's support holds a determined fit, the
-    /// behaviour of the published method). Default true.
-    bool enabled = true;
-    /// Worker threads, >= 1. Unset (default): all available threads; as a stage of
-    /// Point_cloud_object, the object's `threads`. Ignored without TBB. The result does not depend
-    /// on it.
-    std::optional<unsigned> threads = std::nullopt;
-};
 
 namespace internal {
 

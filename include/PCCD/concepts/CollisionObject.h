@@ -1,6 +1,8 @@
 // PCCD/concepts/CollisionObject.h -- concept of the preprocessed objects the intersection queries
-// take, and of the leaf intersector policies that search them (doc/manual/intersection.md; the
-// requirements are proven by archetypes in test/concepts/archetypes_test.cpp).
+// take (doc/manual/intersection.md; the requirements are proven by archetypes in
+// test/concepts/archetypes_test.cpp). Like every concept header it includes no stage of the
+// library: the PCCD types it names are declared here and defined by their stages (a model is
+// checked where they are complete).
 #pragma once
 
 #include <concepts>
@@ -10,14 +12,13 @@
 
 #include <Eigen/Core>
 
-#include <PCCD/Geodesic/Close_pairs_shortest_paths.h>
-#include <PCCD/Hierarchy/Point_cloud_hierarchy.h>
-#include <PCCD/Intersection/Intersection_options.h>
-#include <PCCD/Intersection/internal/Query_state.h>
-#include <PCCD/Proximity_graph/Proximity_graph.h>
-#include <PCCD/Surface/WLS_surface.h>
 
 namespace PCCD {
+
+class Close_pairs_shortest_paths; // PCCD/Geodesic/Close_pairs_shortest_paths.h
+class Point_cloud_hierarchy;      // PCCD/Hierarchy/Point_cloud_hierarchy.h
+class Proximity_graph;            // PCCD/Proximity_graph/Proximity_graph.h
+struct Surface_evaluation;        // PCCD/Surface/WLS_surface.h
 
 /// \concept CollisionObject
 /// A preprocessed point cloud an intersection query can work on. For `const O& o`, an index
@@ -69,32 +70,6 @@ concept CollisionObject = requires(const O& o, std::uint32_t i, const Eigen::Vec
     { o.hierarchy() } -> std::convertible_to<const Point_cloud_hierarchy&>;
     { o.sampling_radius() } -> std::convertible_to<double>;
     { o.noise_estimate() } -> std::convertible_to<double>;
-};
-
-/// \concept LeafIntersector
-/// A policy deciding, inside the overlap region of two objects of types A and B, whether and where
-/// their surfaces intersect (doc/manual/intersection.md). For `const P& p` and a double r:
-/// - `P::name()`: a short name ("isearch", "rst"), convertible to const char*;
-/// - `p.check()`: throws PCCD::Invalid_input for invalid parameters;
-/// - `p.default_epsilon(r)`: the tolerance used when the options leave epsilon unset, given the
-///   smaller sampling radius r, convertible to double;
-/// - `p.run(a, b, options, epsilon, state, closest)`, called by do_intersect() and
-///   intersection_points() with the two posed objects (internal::Posed_object<A>,
-///   internal::Posed_object<B>), the Intersection_options, epsilon, the query's
-///   internal::Query_state (counters, budget, engine, the sink that collects and verifies
-///   candidates: `state.offer(point)`) and a double that receives the closest-distance estimate
-///   (NaN when the policy makes none).
-///
-/// Models: PCCD::Interpolation_search, PCCD::Randomized_sampling, for every pair of
-/// CollisionObject types.
-template <class P, class A, class B>
-concept LeafIntersector = requires(const P& p, double r, const internal::Posed_object<A>& a,
-                                   const internal::Posed_object<B>& b, const Intersection_options& options,
-                                   internal::Query_state& state, double& closest) {
-    { P::name() } -> std::convertible_to<const char*>;
-    p.check();
-    { p.default_epsilon(r) } -> std::convertible_to<double>;
-    p.run(a, b, options, r, state, closest);
 };
 
 } // namespace PCCD

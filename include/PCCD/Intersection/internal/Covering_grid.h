@@ -11,6 +11,8 @@
 
 #include <Eigen/Core>
 
+#include <PCCD/internal/grid_cell.h>
+
 namespace PCCD::internal {
 
 /// Points (one object's local frame) and the question "is any within `radius` of x?". Cells are
@@ -25,13 +27,13 @@ public:
     {
         const Eigen::Vector3d u = x / m_cell;
         const Eigen::Vector3d lower = u.array().floor();
-        const Cell c{std::int64_t(lower.x()), std::int64_t(lower.y()), std::int64_t(lower.z())};
+        const Grid_cell c{std::int64_t(lower.x()), std::int64_t(lower.y()), std::int64_t(lower.z())};
         // +1 where x lies in the upper half of its cell, -1 in the lower half.
         const Eigen::Vector3d frac = u - lower;
         const std::int64_t sx = frac.x() < 0.5 ? -1 : 1, sy = frac.y() < 0.5 ? -1 : 1, sz = frac.z() < 0.5 ? -1 : 1;
         const double r2 = m_radius * m_radius;
         for (int i = 0; i < 8; ++i) {
-            const auto it = m_cells.find(key(Cell{c.x + (i & 1 ? sx : 0), c.y + (i & 2 ? sy : 0), c.z + (i & 4 ? sz : 0)}));
+            const auto it = m_cells.find(grid_key(Grid_cell{c.x + (i & 1 ? sx : 0), c.y + (i & 2 ? sy : 0), c.z + (i & 4 ? sz : 0)}));
             if (it == m_cells.end()) continue;
             for (const Eigen::Vector3d& p : it->second)
                 if ((p - x).squaredNorm() <= r2) return true;
@@ -39,24 +41,9 @@ public:
         return false;
     }
 
-    void add(const Eigen::Vector3d& x) { m_cells[key(cell_of(x))].push_back(x); }
+    void add(const Eigen::Vector3d& x) { m_cells[grid_key(grid_cell(x, m_cell))].push_back(x); }
 
 private:
-    struct Cell {
-        std::int64_t x, y, z;
-    };
-    Cell cell_of(const Eigen::Vector3d& x) const
-    {
-        return Cell{std::int64_t(std::floor(x.x() / m_cell)), std::int64_t(std::floor(x.y() / m_cell)),
-                    std::int64_t(std::floor(x.z() / m_cell))};
-    }
-    static std::uint64_t key(const Cell& c)
-    {
-        // 21 bits per axis; a wrapped key only costs extra distance tests.
-        const auto part = [](std::int64_t v) { return std::uint64_t(v) & ((std::uint64_t(1) << 21) - 1); };
-        return part(c.x) | (part(c.y) << 21) | (part(c.z) << 42);
-    }
-
     double m_radius;
     double m_cell;
     std::unordered_map<std::uint64_t, std::vector<Eigen::Vector3d>> m_cells;

@@ -23,7 +23,7 @@
 #include <PCCD/Geodesic/Stored_paths.h>
 #include <PCCD/Intersection/Intersection_result.h>
 #include <PCCD/Intersection/internal/Covering_grid.h>
-#include <PCCD/Intersection/internal/Query_state.h>
+#include <PCCD/Intersection/Query_state.h>
 #include <PCCD/Random.h>
 
 namespace PCCD::internal {

@@ -19,7 +19,7 @@
 #include <PCCD/Intersection/Intersection_options.h>
 #include <PCCD/Intersection/internal/Covering_grid.h>
 #include <PCCD/Intersection/internal/Position_set.h>
-#include <PCCD/Intersection/internal/Query_state.h>
+#include <PCCD/Intersection/Query_state.h>
 #include <PCCD/Intersection/internal/isearch_role.h>
 #include <PCCD/Random.h>
 #include <PCCD/Rigid_transform_3.h>

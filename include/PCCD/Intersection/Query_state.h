@@ -1,6 +1,8 @@
-// PCCD/Intersection/internal/Query_state.h -- the mutable state of one intersection query: counters,
-// budget, random engine, and the sink that collects the output points at the requested spacing.
-// Internal to do_intersect.h and the leaf intersector policies.
+// PCCD/Intersection/Query_state.h -- the mutable state of one intersection query: counters,
+// budget, random engine, and the sink that verifies candidates and collects the output points at
+// the requested spacing (doc/manual/intersection.md, "Leaf intersectors"). do_intersect() makes
+// one per query; a leaf intersector policy (the LeafIntersector concept) receives it and reports
+// its candidates through offer().
 #pragma once
 
 #include <cmath>
@@ -16,32 +18,15 @@
 
 #include <PCCD/Intersection/Intersection_result.h>
 #include <PCCD/Intersection/Intersection_visitor.h>
+#include <PCCD/Intersection/Posed_object.h>
 #include <PCCD/Random.h>
 #include <PCCD/Rigid_transform_3.h>
 #include <PCCD/Surface/WLS_surface.h>
+#include <PCCD/internal/grid_cell.h>
 #include <PCCD/internal/timing.h>
 
-namespace PCCD::internal {
+namespace PCCD {
 
-/// One object of a query with its pose: evaluations of its surface at world or local points, with
-/// the evaluation counted.
-template <class Object>
-struct Posed_object {
-    const Object* object;
-    Rigid_transform_3<double> to_world;
-    Rigid_transform_3<double> from_world;
-
-    Posed_object(const Object& o, const Rigid_transform_3<double>& pose)
-        : object(&o), to_world(pose), from_world(pose.inverse())
-    {
-    }
-    /// Local position of cloud point i.
-    Eigen::Vector3d position(std::uint32_t i) const { return object->cloud().position(i).template cast<double>(); }
-    std::size_t size() const { return object->size(); }
-    double sampling_radius() const { return object->sampling_radius(); }
-    double noise_estimate() const { return double(object->noise_estimate()); }
-    double support_radius() const { return object->surface().support_radius(); }
-};
 
 /// Collects output points: keeps a point only if no kept point lies within `spacing` (a hash grid
 /// of cell `spacing`), and tells the query to stop at the first point in first-hit mode.
@@ -63,7 +48,7 @@ public:
     {
         if (m_out->empty() || m_first_hit) return false;
         const int reach = int(std::ceil(radius / m_spacing));
-        const Cell c = cell_of(x);
+        const internal::Grid_cell c = internal::grid_cell(x, m_spacing);
         if (reach > 2) { // a wide radius: scan the points (rare; only for huge radii)
             for (const Intersection_point& p : *m_out)
                 if ((p.position - x).squaredNorm() <= radius * radius) return true;
@@ -72,7 +57,7 @@ public:
         for (int dx = -reach; dx <= reach; ++dx)
             for (int dy = -reach; dy <= reach; ++dy)
                 for (int dz = -reach; dz <= reach; ++dz) {
-                    const auto it = m_grid.find(key(Cell{c.x + dx, c.y + dy, c.z + dz}));
+                    const auto it = m_grid.find(internal::grid_key({c.x + dx, c.y + dy, c.z + dz}));
                     if (it == m_grid.end()) continue;
                     for (std::uint32_t k : it->second)
                         if (((*m_out)[k].position - x).squaredNorm() <= radius * radius) return true;
@@ -85,28 +70,12 @@ public:
     {
         if (done()) return false;
         if (!m_first_hit && near(p.position, m_spacing)) return false;
-        m_grid[key(cell_of(p.position))].push_back(std::uint32_t(m_out->size()));
+        m_grid[internal::grid_key(internal::grid_cell(p.position, m_spacing))].push_back(std::uint32_t(m_out->size()));
         m_out->push_back(p);
         return true;
     }
 
 private:
-    struct Cell {
-        std::int64_t x, y, z;
-    };
-    Cell cell_of(const Eigen::Vector3d& x) const
-    {
-        return Cell{std::int64_t(std::floor(x.x() / m_spacing)), std::int64_t(std::floor(x.y() / m_spacing)),
-                    std::int64_t(std::floor(x.z() / m_spacing))};
-    }
-    static std::uint64_t key(const Cell& c)
-    {
-        // Cells of finite coordinates of bounded objects: 21 bits per axis are plenty; wrap otherwise
-        // (a collision only costs an extra distance test).
-        const auto part = [](std::int64_t v) { return std::uint64_t(v) & ((std::uint64_t(1) << 21) - 1); };
-        return part(c.x) | (part(c.y) << 21) | (part(c.z) << 42);
-    }
-
     bool m_first_hit;
     double m_spacing;
     std::vector<Intersection_point>* m_out;
@@ -121,7 +90,7 @@ struct Query_state {
     Intersection_counters counters;
     std::optional<std::size_t> budget;
     /// Time budget: the query stops once the steady clock passes it.
-    std::optional<Steady_clock::time_point> deadline;
+    std::optional<internal::Steady_clock::time_point> deadline;
     bool budget_hit = false;
     /// The smallest |f_T(p)| over the samples p of the interpolation search where f_T was defined
     /// (p a point of one cloud, f_T the other surface); +infinity before any.
@@ -165,7 +134,7 @@ struct Query_state {
     bool out_of_budget()
     {
         if (budget && counters.f_evaluations >= *budget) budget_hit = true;
-        if (deadline && !budget_hit && Steady_clock::now() >= *deadline) budget_hit = true;
+        if (deadline && !budget_hit && internal::Steady_clock::now() >= *deadline) budget_hit = true;
         return budget_hit;
     }
     /// The query should stop: first hit found or budget spent.
@@ -208,4 +177,4 @@ struct Query_state {
     }
 };
 
-} // namespace PCCD::internal
+} // namespace PCCD

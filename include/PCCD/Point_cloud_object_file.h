@@ -1,10 +1,12 @@
-// PCCD/internal/Point_cloud_object_file.h -- the object file format of Point_cloud_object: the
+// PCCD/Point_cloud_object_file.h -- the object file format of Point_cloud_object: the
 // definitions of save() and load() and their helpers, through the little-endian binary reader and
 // writer of PCCD/internal/binary_stream.h. Included at the end of PCCD/Point_cloud_object.h, never
 // on its own. Implements doc/manual/surface.md, "One call: Point_cloud_object" (save and load).
 #pragma once
 
-#include <PCCD/Point_cloud_object.h>
+// Not self-contained on purpose: PCCD/Point_cloud_object.h includes this file after the class
+// definition (the class's out-of-line members, like a .tcc file of a standard library), so this
+// part does not include the class header back.
 
 #include <numeric>
 #include <vector>

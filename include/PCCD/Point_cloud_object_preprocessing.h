@@ -1,4 +1,4 @@
-// PCCD/internal/Point_cloud_object_preprocessing.h -- the preprocessing pipeline of
+// PCCD/Point_cloud_object_preprocessing.h -- the preprocessing pipeline of
 // Point_cloud_object: the definitions of its private stages (input checks and point order, outlier
 // removal, kernel with CPSP map and normals, orientation, domain, the surfaces and the hierarchy).
 // Included at the end of PCCD/Point_cloud_object.h, never on its own. Implements
@@ -6,7 +6,9 @@
 // noise and outliers".
 #pragma once
 
-#include <PCCD/Point_cloud_object.h>
+// Not self-contained on purpose: PCCD/Point_cloud_object.h includes this file after the class
+// definition (the class's out-of-line members, like a .tcc file of a standard library), so this
+// part does not include the class header back.
 
 #include <algorithm>
 #include <memory>
