@@ -252,6 +252,8 @@ public:
     /// @{
     const std::vector<Node>& nodes() const { return m_nodes; }
     const Node& node(Index i) const { return m_nodes[i]; }
+    /// Whether node i is a leaf (the walks of traversal.h read the tree through is_leaf, left, right).
+    bool is_leaf(Index i) const { return m_nodes[i].is_leaf(); }
     const Node& root() const { return m_nodes.front(); }
     Index left(Index i) const { return i + 1; }
     Index right(Index i) const { return m_nodes[i].right; }
@@ -287,7 +289,7 @@ public:
     bool empty() const { return m_nodes.empty(); }
     std::size_t leaf_size() const { return m_leaf_size; }
     /// Number of levels (1 for a single leaf).
-    std::size_t height() const { return m_nodes.empty() ? 0 : height_of(0); }
+    std::size_t height() const { return m_nodes.empty() ? 0 : height_of_tree(); }
     std::size_t memory_bytes() const
     {
         return m_nodes.capacity() * sizeof(Node) + m_order.capacity() * sizeof(Index) +
@@ -598,10 +600,14 @@ private:
         return {a.centre + ((radius - a.radius) / distance) * d, radius + 4.0 * std::numeric_limits<double>::epsilon() * scale};
     }
 
-    std::size_t height_of(Index i) const
+    /// The tree's height: nodes are stored in depth-first order (children after their parent), so
+    /// one pass from the last node to the root sees both children before the parent.
+    std::size_t height_of_tree() const
     {
-        if (m_nodes[i].is_leaf()) return 1;
-        return 1 + std::max(height_of(left(i)), height_of(right(i)));
+        std::vector<std::size_t> heights(m_nodes.size(), 1);
+        for (std::size_t i = m_nodes.size(); i-- > 0;)
+            if (!m_nodes[i].is_leaf()) heights[i] = 1 + std::max(heights[left(Index(i))], heights[right(Index(i))]);
+        return heights.front();
     }
 
     std::vector<Node> m_nodes;

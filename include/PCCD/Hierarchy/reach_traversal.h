@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -22,227 +23,113 @@
 
 #include <PCCD/Error.h>
 #include <PCCD/Hierarchy/Point_cloud_hierarchy.h>
+#include <PCCD/Hierarchy/Reach_rule.h>
+#include <PCCD/Hierarchy/node_pair_tests.h>
+#include <PCCD/Hierarchy/point_queries.h>
+#include <PCCD/Hierarchy/traversal.h>
 #include <PCCD/Rigid_transform_3.h>
 #include <PCCD/concepts/PairObserver.h>
 
 namespace PCCD {
 
-/// How a query scales the reaches stored in a hierarchy: a point's reach is min(scale * stored, cap).
-/// Monotone in the stored reach, so a node's largest reach maps to the largest of its points.
-struct Reach_rule {
-    /// Factor on the stored reach, > 0 (1: the surface's domain; the contact core of a verified
-    /// contact, Intersection_options::contact_core, for where a contact can lie).
-    double scale = 1.0;
-    /// Upper bound on any reach (e.g. the kernel's support radius: f needs a point that close), > 0.
-    double cap = std::numeric_limits<double>::infinity();
-
-    double operator()(double stored) const { return std::min(scale * stored, cap); }
-};
-
-/// What a reach traversal visited.
-struct Reach_counters {
-    /// Node pairs tested.
-    std::size_t node_pairs = 0;
-    /// Leaf pairs whose points were compared.
-    std::size_t leaf_pairs = 0;
-    /// Node pairs still waiting when the visitor stopped the traversal (their subtrees were not
-    /// visited); 0 when the traversal ran to its end.
-    std::size_t pending = 0;
-};
-
-/// Whether box `a` mapped by `a_to_b` and grown by `margin_a`, and the axis-aligned box `b` grown by
-/// `margin_b`, may overlap: false only when one of the six face normals separates them (the grown
-/// boxes contain the Minkowski sums of the boxes with balls of those radii, so a false answer means
-/// no point within margin_a of box a is within margin_b of box b). O(1); pure.
 namespace internal {
 
-/// grown_boxes_may_overlap() with the rotation r of the motion, |r| and a's centre already mapped
-/// (a traversal computes |r| once).
-inline bool grown_boxes_may_overlap(const Eigen::AlignedBox3d& a, const Eigen::Matrix3d& r, const Eigen::Matrix3d& abs_r,
-                                    const Eigen::Vector3d& mapped_centre_a, double margin_a, const Eigen::AlignedBox3d& b,
-                                    double margin_b)
-{
-    const Eigen::Vector3d ha = 0.5 * (a.max() - a.min()) + Eigen::Vector3d::Constant(margin_a);
-    const Eigen::Vector3d hb = 0.5 * (b.max() - b.min()) + Eigen::Vector3d::Constant(margin_b);
-    const Eigen::Vector3d t = mapped_centre_a - b.center();
-    for (int i = 0; i < 3; ++i)
-        if (std::abs(t(i)) > hb(i) + abs_r.row(i).dot(ha)) return false;
-    for (int j = 0; j < 3; ++j)
-        if (std::abs(t.dot(r.col(j))) > ha(j) + abs_r.col(j).dot(hb)) return false;
-    return true;
-}
+/// for_each_leaf_pair_within_reach() as traits of the pair walk of traversal.h: the node-pair tests
+/// of node_pair_tests.h with the margins of the two reach rules, the four child pairs of two inner
+/// nodes at once, the children nearer the other node first with `closest_first`.
+template <class Visitor, class Observer>
+struct Reach_pair_traits {
+    const Point_cloud_hierarchy& s;
+    const Point_cloud_hierarchy& t;
+    const Rigid_transform_3<double>& s_to_t;
+    const Reach_rule& rule_s;
+    const Reach_rule& rule_t;
+    Visitor& visit;
+    Observer& observer;
+    bool closest_first;
+    bool either;
+    const Eigen::Matrix3d& r;
+    const Eigen::Matrix3d abs_r;
+    const Pair_tests tests;
+    /// The nodes of s mapped lately (each appears in several pairs), by node index modulo 64 (left
+    /// default-initialized: only their `node` is set, to "none").
+    std::array<Mapped_node, 64> mapped_nodes;
+    std::size_t leaf_pairs = 0;
+    bool stopped = false;
 
-/// An interval holding m . p for the points p of `node` (its local frame; without a slab, the box's projection):
-/// with m = a n + w, w normal to the slab's normal n, a n . p lies in the slab's interval scaled by
-/// a and w . p in the box's projection onto w. For m along n it is the slab's own interval, however
-/// thick the box; for m normal to n, the box's projection.
-inline std::pair<double, double> node_extent_along(const Point_cloud_hierarchy::Node& node, const Eigen::Vector3d& m)
-{
-    const Eigen::Vector3d c = node.box.center(), h = 0.5 * (node.box.max() - node.box.min());
-    if (!node.has_slab()) { // no slab (a refitted tree): the box's projection
-        const double mc = m.dot(c), mh = m.cwiseAbs().dot(h);
-        return {mc - mh, mc + mh};
-    }
-    const double a = m.dot(node.slab_normal);
-    const Eigen::Vector3d w = m - a * node.slab_normal;
-    const double wc = w.dot(c), wh = w.cwiseAbs().dot(h);
-    return {(a >= 0.0 ? a * node.slab_min : a * node.slab_max) + wc - wh,
-            (a >= 0.0 ? a * node.slab_max : a * node.slab_min) + wc + wh};
-}
+    using Index = Point_cloud_hierarchy::Index;
 
-/// Node `ns` of s as seen from t's frame: its box centre, its slab normal and the shift of its
-/// slab's interval, its sphere's centre (a node pair's test needs them; a walk meets each node in
-/// several pairs).
-struct Mapped_node {
-    Point_cloud_hierarchy::Index node = std::numeric_limits<Point_cloud_hierarchy::Index>::max();
-    Eigen::Vector3d centre;
-    Eigen::Vector3d slab_normal;
-    double slab_shift = 0.0;
-    Eigen::Vector3d sphere_centre;
-};
-
-/// Which tests a traversal of s against t applies to its node pairs: the boxes' separating axes
-/// unless both hierarchies use spheres, the spheres when both have them, and the slabs of the
-/// nodes that have one (a box_and_slab hierarchy's, not refitted).
-struct Pair_tests {
-    bool boxes;
-    bool spheres;
-
-    Pair_tests(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t)
-        : boxes(!(s.volume() == Bounding_volume::sphere && t.volume() == Bounding_volume::sphere)),
-          spheres(s.has_spheres() && t.has_spheres())
+    Reach_pair_traits(const Point_cloud_hierarchy& s_, const Point_cloud_hierarchy& t_, const Rigid_transform_3<double>& s_to_t_,
+                      const Reach_rule& rule_s_, const Reach_rule& rule_t_, Visitor& visit_, Observer& observer_,
+                      bool closest_first_, bool either_)
+        : s(s_), t(t_), s_to_t(s_to_t_), rule_s(rule_s_), rule_t(rule_t_), visit(visit_), observer(observer_),
+          closest_first(closest_first_), either(either_), r(s_to_t_.rotation()), abs_r(r.cwiseAbs()), tests(s_, t_)
     {
     }
+
+    bool go_further() const { return !stopped; }
+    const Mapped_node& mapped(Index i)
+    {
+        Mapped_node& m = mapped_nodes[i & 63];
+        if (m.node != i) {
+            const auto& ns = s.node(i);
+            m.node = i;
+            m.centre = s_to_t.transform_point(ns.box.center());
+            m.slab_normal = r * ns.slab_normal;
+            m.slab_shift = m.slab_normal.dot(s_to_t.translation());
+            if (tests.spheres) m.sphere_centre = s_to_t.transform_point(s.sphere(i).centre);
+        }
+        return m;
+    }
+    bool enter(Index i, Index j)
+    {
+        observer.node_pair(i, j);
+        const auto& ns = s.node(i);
+        const auto& nt = t.node(j);
+        const Mapped_node& m = mapped(i);
+        const double ms = rule_s(ns.reach), mt = rule_t(nt.reach);
+        if (tests.boxes &&
+            !grown_boxes_may_overlap(ns.box, r, abs_r, m.centre, either ? 0.0 : ms, nt.box, either ? std::max(ms, mt) : mt))
+            return false;
+        const double margin = either ? std::max(ms, mt) : ms + mt;
+        if (tests.spheres) {
+            const double apart = s.sphere(i).radius + t.sphere(j).radius + margin;
+            if ((m.sphere_centre - t.sphere(j).centre).squaredNorm() > apart * apart) return false;
+        }
+        return slabs_may_overlap(ns, m, r, s_to_t.translation(), nt, margin);
+    }
+    Pair_split split(Index i, Index j) const
+    {
+        // Both inner: the four child pairs at once (a pair of an inner node and a child is mostly
+        // kept where the walk goes on, so testing it first is wasted).
+        const bool leaf_s = s.is_leaf(i), leaf_t = t.is_leaf(j);
+        if (leaf_s && leaf_t) return Pair_split::leaves;
+        if (!leaf_s && !leaf_t) return Pair_split::both;
+        return leaf_s ? Pair_split::second : Pair_split::first;
+    }
+    void leaf_pair(Index i, Index j)
+    {
+        ++leaf_pairs;
+        observer.leaf_pair(i, j);
+        if (!visit(i, j)) stopped = true;
+    }
+    bool first_left_first(Index i, Index j) const
+    {
+        if (!closest_first) return true;
+        // Distances are the same in s's frame: one mapping of t's centre instead of two of s's.
+        const Eigen::Vector3d c = r.transpose() * (t.node(j).box.center() - s_to_t.translation());
+        return !((s.node(s.right(i)).box.center() - c).squaredNorm() < (s.node(s.left(i)).box.center() - c).squaredNorm());
+    }
+    bool second_left_first(Index i, Index j) const
+    {
+        if (!closest_first) return true;
+        const Eigen::Vector3d& centre_s = mapped_nodes[i & 63].centre; // entered just before
+        return !((t.node(t.right(j)).box.center() - centre_s).squaredNorm() <
+                 (t.node(t.left(j)).box.center() - centre_s).squaredNorm());
+    }
 };
 
-/// Whether node `ns` of s (seen from t's frame as `mapped`; r the rotation of the motion) and node
-/// `nt` of t may hold points closer than `margin`, by their slabs: along each node's slab normal,
-/// the node's slab against the other node's extent (node_extent_along). False only when one of the
-/// two normals separates them. A node without a slab (zero normal, infinite interval) never separates.
-inline bool slabs_may_overlap(const Point_cloud_hierarchy::Node& ns, const Mapped_node& mapped, const Eigen::Matrix3d& r,
-                              const Eigen::Vector3d& shift, const Point_cloud_hierarchy::Node& nt, double margin)
-{
-    if (ns.has_slab()) {
-        // s's slab in t's frame: normal r n_s, interval shifted by (r n_s) . shift.
-        const auto [lo, hi] = node_extent_along(nt, mapped.slab_normal);
-        if (lo > ns.slab_max + mapped.slab_shift + margin || hi < ns.slab_min + mapped.slab_shift - margin) return false;
-    }
-    if (nt.has_slab()) {
-        // t's slab normal n_t seen from s: n_t . (r p + shift) = (r^T n_t) . p + n_t . shift.
-        const Eigen::Vector3d u = r.transpose() * nt.slab_normal;
-        const double offset = nt.slab_normal.dot(shift);
-        const auto [lo, hi] = node_extent_along(ns, u);
-        if (lo + offset > nt.slab_max + margin || hi + offset < nt.slab_min - margin) return false;
-    }
-    return true;
-}
-
 } // namespace internal
-
-inline bool grown_boxes_may_overlap(const Eigen::AlignedBox3d& a, const Rigid_transform_3<double>& a_to_b,
-                                    double margin_a, const Eigen::AlignedBox3d& b, double margin_b)
-{
-    const Eigen::Matrix3d& r = a_to_b.rotation();
-    const Eigen::Matrix3d abs_r = r.cwiseAbs();
-    return internal::grown_boxes_may_overlap(a, r, abs_r, a_to_b.transform_point(a.center()), margin_a, b, margin_b);
-}
-
-/// Whether the point q (t's local frame) lies within the reach of some point of t: |q - p_k| <=
-/// rule(reach_k) for some k. Exact (compares points at the leaves). O(height) nodes for a point
-/// near one leaf; more where grown boxes overlap.
-/// (A query-path loop, written out like nearest_point()'s: one depth-first helper for both, taking
-/// the node visit as a lambda, measured 3 % slower interpolation-search queries.)
-inline bool within_reach(const Point_cloud_hierarchy& t, const Eigen::Vector3d& q, const Reach_rule& rule)
-{
-    if (t.empty()) return false;
-    using Index = Point_cloud_hierarchy::Index;
-    const Eigen::Matrix4Xd& points = t.ordered_points();
-    // A fixed stack: a depth-first walk holds at most one sibling per level, and a median-split tree
-    // of < 2^32 points has fewer than 64 levels.
-    Index stack[64];
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-        const Index i = stack[--top];
-        const auto& node = t.node(i);
-        const double margin = rule(node.reach);
-        if ((q.array() < node.box.min().array() - margin).any() || (q.array() > node.box.max().array() + margin).any())
-            continue;
-        if (node.is_leaf()) {
-            for (Index k = node.first; k < node.first + node.count; ++k) {
-                const double reach = rule(points(3, k));
-                if ((points.col(k).head<3>() - q).squaredNorm() <= reach * reach) return true;
-            }
-            continue;
-        }
-        stack[top++] = t.right(i);
-        stack[top++] = t.left(i);
-    }
-    return false;
-}
-
-/// The point of t nearest to q (t's local frame): its position in hierarchy order (a column of
-/// t.ordered_points()) and its squared distance; {t.size(), +inf} for an empty hierarchy. Exact
-/// (branch and bound over the boxes, nearer child first). O(height) nodes for a point near t.
-inline std::pair<std::size_t, double> nearest_point(const Point_cloud_hierarchy& t, const Eigen::Vector3d& q)
-{
-    std::pair<std::size_t, double> best{t.size(), std::numeric_limits<double>::infinity()};
-    if (t.empty()) return best;
-    using Index = Point_cloud_hierarchy::Index;
-    const Eigen::Matrix4Xd& points = t.ordered_points();
-    Index stack[64];
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-        const Index i = stack[--top];
-        const auto& node = t.node(i);
-        if (node.box.squaredExteriorDistance(q) >= best.second) continue;
-        if (node.is_leaf()) {
-            for (Index k = node.first; k < node.first + node.count; ++k) {
-                const double d = (points.col(k).head<3>() - q).squaredNorm();
-                if (d < best.second) best = {k, d};
-            }
-            continue;
-        }
-        Index near = t.left(i), far = t.right(i);
-        if (t.node(far).box.squaredExteriorDistance(q) < t.node(near).box.squaredExteriorDistance(q)) std::swap(near, far);
-        stack[top++] = far;
-        stack[top++] = near;
-    }
-    return best;
-}
-
-/// A point of t near q (t's local frame), found by one descent without backtracking: from the root,
-/// into the child whose box lies nearer q (the one whose centre is nearer when q is inside both),
-/// then the nearest point of that leaf. Returns its position in hierarchy order and its squared
-/// distance ({t.size(), +inf} for an empty hierarchy). Not always the nearest point: it is when q
-/// lies inside the boxes on one root-to-leaf path only (e.g. on the sampled surface, away from box
-/// boundaries), otherwise a point of a leaf whose box is nearest at each level. A cheap step for
-/// heuristics (the probes of the walked traversals); nearest_point() is the exact query.
-/// Complexity: O(height + leaf size), no stack.
-inline std::pair<std::size_t, double> descend_to_near_point(const Point_cloud_hierarchy& t, const Eigen::Vector3d& q)
-{
-    std::pair<std::size_t, double> best{t.size(), std::numeric_limits<double>::infinity()};
-    if (t.empty()) return best;
-    using Index = Point_cloud_hierarchy::Index;
-    Index i = 0;
-    while (!t.node(i).is_leaf()) {
-        const Index l = t.left(i), r = t.right(i);
-        const double dl = t.node(l).box.squaredExteriorDistance(q), dr = t.node(r).box.squaredExteriorDistance(q);
-        if (dl != dr) {
-            i = dl < dr ? l : r;
-        } else {
-            i = (t.node(l).box.center() - q).squaredNorm() <= (t.node(r).box.center() - q).squaredNorm() ? l : r;
-        }
-    }
-    const auto& leaf = t.node(i);
-    const Eigen::Matrix4Xd& points = t.ordered_points();
-    for (Index k = leaf.first; k < leaf.first + leaf.count; ++k) {
-        const double d = (points.col(k).head<3>() - q).squaredNorm();
-        if (d < best.second) best = {k, d};
-    }
-    return best;
-}
 
 /// Calls `visit(leaf_s, leaf_t)` for every pair of leaves whose bounding volumes may hold a point of
 /// s within the reach (per `rule_t`) of a point of t: s's box mapped by `s_to_t`, t's box grown by
@@ -270,88 +157,12 @@ Reach_counters for_each_leaf_pair_within_reach(const Point_cloud_hierarchy& s, c
 {
     Reach_counters counters;
     if (s.empty() || t.empty()) return counters;
-    using Index = Point_cloud_hierarchy::Index;
-    const Eigen::Matrix3d& r = s_to_t.rotation();
-    const Eigen::Matrix3d abs_r = r.cwiseAbs();
-    // A depth-first walk holds at most three pending sibling pairs per level of the two trees.
-    std::vector<std::pair<Index, Index>> stack;
-    stack.reserve(128);
-    stack.emplace_back(0, 0);
-    // The nodes of s mapped lately (each appears in several pairs), by node index modulo 64.
-    std::array<internal::Mapped_node, 64> mapped_nodes;
-    const internal::Pair_tests tests(s, t);
-    while (!stack.empty()) {
-        const auto [i, j] = stack.back();
-        stack.pop_back();
-        ++counters.node_pairs;
-        observer.node_pair(i, j);
-        const auto& ns = s.node(i);
-        const auto& nt = t.node(j);
-        internal::Mapped_node& mapped = mapped_nodes[i & 63];
-        if (mapped.node != i) {
-            mapped.node = i;
-            mapped.centre = s_to_t.transform_point(ns.box.center());
-            mapped.slab_normal = r * ns.slab_normal;
-            mapped.slab_shift = mapped.slab_normal.dot(s_to_t.translation());
-            if (tests.spheres) mapped.sphere_centre = s_to_t.transform_point(s.sphere(i).centre);
-        }
-        const Eigen::Vector3d& centre_s = mapped.centre;
-        const double ms = rule_s(ns.reach), mt = rule_t(nt.reach);
-        if (tests.boxes && !internal::grown_boxes_may_overlap(ns.box, r, abs_r, centre_s, either ? 0.0 : ms, nt.box,
-                                                              either ? std::max(ms, mt) : mt))
-            continue;
-        const double margin = either ? std::max(ms, mt) : ms + mt;
-        if (tests.spheres) {
-            const double apart = s.sphere(i).radius + t.sphere(j).radius + margin;
-            if ((mapped.sphere_centre - t.sphere(j).centre).squaredNorm() > apart * apart) continue;
-        }
-        if (!internal::slabs_may_overlap(ns, mapped, r, s_to_t.translation(), nt, margin)) continue;
-        if (ns.is_leaf() && nt.is_leaf()) {
-            ++counters.leaf_pairs;
-            observer.leaf_pair(i, j);
-            if (!visit(i, j)) {
-                counters.pending = stack.size();
-                return counters;
-            }
-            continue;
-        }
-        if (!ns.is_leaf() && !nt.is_leaf()) {
-            // Both inner: the four child pairs at once (a pair of an inner node and a child is
-            // mostly kept where the walk goes on, so testing it first is wasted).
-            Index sc[2] = {s.left(i), s.right(i)}, tc[2] = {t.left(j), t.right(j)};
-            if (closest_first) {
-                const Eigen::Vector3d c = r.transpose() * (nt.box.center() - s_to_t.translation());
-                if ((s.node(sc[1]).box.center() - c).squaredNorm() < (s.node(sc[0]).box.center() - c).squaredNorm())
-                    std::swap(sc[0], sc[1]);
-                if ((t.node(tc[1]).box.center() - centre_s).squaredNorm() < (t.node(tc[0]).box.center() - centre_s).squaredNorm())
-                    std::swap(tc[0], tc[1]);
-            }
-            stack.emplace_back(sc[1], tc[1]);
-            stack.emplace_back(sc[1], tc[0]);
-            stack.emplace_back(sc[0], tc[1]);
-            stack.emplace_back(sc[0], tc[0]);
-            continue;
-        }
-        if (!ns.is_leaf()) {
-            Index first = s.left(i), second = s.right(i);
-            if (closest_first) {
-                // Distances are the same in s's frame: one mapping of t's centre instead of two of s's.
-                const Eigen::Vector3d c = r.transpose() * (nt.box.center() - s_to_t.translation());
-                const auto distance = [&](Index k) { return (s.node(k).box.center() - c).squaredNorm(); };
-                if (distance(second) < distance(first)) std::swap(first, second);
-            }
-            stack.emplace_back(second, j);
-            stack.emplace_back(first, j);
-        } else {
-            Index first = t.left(j), second = t.right(j);
-            if (closest_first) {
-                const auto distance = [&](Index k) { return (t.node(k).box.center() - centre_s).squaredNorm(); };
-                if (distance(second) < distance(first)) std::swap(first, second);
-            }
-            stack.emplace_back(i, second);
-            stack.emplace_back(i, first);
-        }
-    }
+    internal::Reach_pair_traits<std::remove_reference_t<Visitor>, std::remove_reference_t<Observer>> traits(
+        s, t, s_to_t, rule_s, rule_t, visit, observer, closest_first, either);
+    const Walk_counters walk = traverse(s, Point_cloud_hierarchy::Index(0), t, Point_cloud_hierarchy::Index(0), traits);
+    counters.node_pairs = walk.tested;
+    counters.leaf_pairs = traits.leaf_pairs;
+    counters.pending = walk.pending;
     return counters;
 }
 

@@ -15,7 +15,9 @@
 #include <Eigen/Geometry>
 
 #include <PCCD/Hierarchy/Point_cloud_hierarchy.h>
+#include <PCCD/Hierarchy/node_pair_tests.h>
 #include <PCCD/Hierarchy/overlapping_leaves.h>
+#include <PCCD/Hierarchy/traversal.h>
 #include <PCCD/Intersection/Intersection_options.h>
 #include <PCCD/Intersection/Intersection_result.h>
 #include <PCCD/Random.h>
@@ -38,21 +40,24 @@ void for_each_region_pair(const Point_cloud_hierarchy& s, const Point_cloud_hier
         return;
     }
     // Object boxes: s's leaves against t's root box only.
-    std::vector<Point_cloud_hierarchy::Index> stack{0};
-    const Eigen::AlignedBox3d& root = t.root().box;
-    while (!stack.empty()) {
-        const auto i = stack.back();
-        stack.pop_back();
-        ++counters.node_pairs;
-        if (!boxes_may_overlap(s.node(i).box, s_to_t, root, margin)) continue;
-        if (s.node(i).is_leaf()) {
-            ++counters.leaf_pairs;
+    struct Traits {
+        const Point_cloud_hierarchy& s;
+        const Rigid_transform_3<double>& s_to_t;
+        const Eigen::AlignedBox3d& root;
+        double margin;
+        Visitor& visit;
+        std::size_t leaves = 0;
+        bool go_further() const { return true; }
+        bool enter(Point_cloud_hierarchy::Index i) const { return boxes_may_overlap(s.node(i).box, s_to_t, root, margin); }
+        void leaf(Point_cloud_hierarchy::Index i)
+        {
+            ++leaves;
             visit(i, Point_cloud_hierarchy::Index(0));
-        } else {
-            stack.push_back(s.right(i));
-            stack.push_back(s.left(i));
         }
-    }
+        bool left_first(Point_cloud_hierarchy::Index) const { return true; }
+    } traits{s, s_to_t, t.root().box, margin, visit};
+    counters.node_pairs += traverse(s, Point_cloud_hierarchy::Index(0), traits).tested;
+    counters.leaf_pairs += traits.leaves;
 }
 
 /// The points of s (indices) whose position, mapped by s_to_t, lies in a region box of t grown by
@@ -73,18 +78,17 @@ inline bool in_region(const Point_cloud_hierarchy& t, Point_cloud_hierarchy::Ind
         return (q.array() >= box.min().array() - margin).all() && (q.array() <= box.max().array() + margin).all();
     };
     if (region == Overlap_region::object_boxes) return inside(t.root().box);
-    Point_cloud_hierarchy::Index stack[64];
-    int top = 0;
-    stack[top++] = node;
-    while (top > 0) {
-        const auto i = stack[--top];
-        if (!inside(t.node(i).box)) continue;
-        if (t.node(i).is_leaf()) return true;
-        if (top + 2 > 64) return true; // deeper than any balanced tree of < 2^32 points: stay conservative
-        stack[top++] = t.right(i);
-        stack[top++] = t.left(i);
-    }
-    return false;
+    struct Traits {
+        const Point_cloud_hierarchy& t;
+        const decltype(inside)& in_box;
+        bool found = false;
+        bool go_further() const { return !found; }
+        bool enter(Point_cloud_hierarchy::Index i) const { return in_box(t.node(i).box); }
+        void leaf(Point_cloud_hierarchy::Index) { found = true; }
+        bool left_first(Point_cloud_hierarchy::Index) const { return true; }
+    } traits{t, inside};
+    traverse(t, node, traits);
+    return traits.found;
 }
 
 template <class Position>

@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <PCCD/Hierarchy/traversal.h>
 #include <PCCD/Kinetic/internal/Primitive_slots.h>
 
 namespace PCCD::internal {
@@ -97,40 +98,46 @@ std::uint32_t build_over_live_primitives(const Primitive_slots<P>& primitives, P
     return build_median_split(std::move(ids), centroids, nodes);
 }
 
-/// Nodes of the subtree of `root` in post-order (children before parents).
+/// A node array read as a tree by the walks of PCCD/Hierarchy/traversal.h.
+struct AABB_node_array {
+    const std::vector<AABB_node>& nodes;
+    bool is_leaf(std::uint32_t n) const { return nodes[n].is_leaf(); }
+    std::uint32_t left(std::uint32_t n) const { return nodes[n].left; }
+    std::uint32_t right(std::uint32_t n) const { return nodes[n].right; }
+};
+
+/// Nodes of the subtree of `root` in post-order (children before parents): the reverse of a
+/// pre-order walk that takes the right child first.
 inline void postorder(const std::vector<AABB_node>& nodes, std::uint32_t root, std::vector<std::uint32_t>& out)
 {
     out.clear();
     if (root == no_node) return;
-    std::vector<std::uint32_t> stack{root};
-    while (!stack.empty()) {
-        const std::uint32_t n = stack.back();
-        stack.pop_back();
-        out.push_back(n);
-        if (!nodes[n].is_leaf()) {
-            stack.push_back(nodes[n].left);
-            stack.push_back(nodes[n].right);
+    struct Traits {
+        std::vector<std::uint32_t>& out;
+        bool go_further() const { return true; }
+        bool enter(std::uint32_t n)
+        {
+            out.push_back(n);
+            return true;
         }
-    }
+        void leaf(std::uint32_t) {}
+        bool left_first(std::uint32_t) const { return false; }
+    } traits{out};
+    traverse(AABB_node_array{nodes}, root, traits);
     std::reverse(out.begin(), out.end());
 }
 
-/// Height of the subtree of `root` (a single leaf has height 0; an empty tree -1).
+/// Height of the subtree of `root` (a single leaf has height 0; an empty tree -1): children's
+/// heights before their parents', in post-order.
 inline int height(const std::vector<AABB_node>& nodes, std::uint32_t root)
 {
     if (root == no_node) return -1;
-    int best = 0;
-    std::vector<std::pair<std::uint32_t, int>> stack{{root, 0}};
-    while (!stack.empty()) {
-        const auto [n, depth] = stack.back();
-        stack.pop_back();
-        best = std::max(best, depth);
-        if (!nodes[n].is_leaf()) {
-            stack.push_back({nodes[n].left, depth + 1});
-            stack.push_back({nodes[n].right, depth + 1});
-        }
-    }
-    return best;
+    std::vector<std::uint32_t> order;
+    postorder(nodes, root, order);
+    std::vector<int> heights(nodes.size(), 0);
+    for (const std::uint32_t n : order)
+        if (!nodes[n].is_leaf()) heights[n] = 1 + std::max(heights[nodes[n].left], heights[nodes[n].right]);
+    return heights[root];
 }
 
 } // namespace PCCD::internal

@@ -22,6 +22,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <PCCD/Hierarchy/traversal.h>
 #include <PCCD/Kinetic/Kinetic_ray.h>
 #include <PCCD/Kinetic/boxes_overlap.h>
 #include <PCCD/Kinetic/intersect_ray_triangle.h>
@@ -41,39 +42,34 @@ bool primitives_adjacent(const Tree& tree, std::uint32_t i, std::uint32_t j)
     return false;
 }
 
-/// Simultaneous depth-first traversal of two trees: `descend(na, nb, box_a, box_b)` decides whether
-/// a node pair is opened, `on_leaf_pair(na, nb)` is called for leaf pairs that pass `descend`.
-/// The node with the larger box (by diagonal) is opened first; leaves are never opened.
+/// Simultaneous depth-first traversal of two trees (the pair walk of PCCD/Hierarchy/traversal.h):
+/// `descend(na, nb, box_a, box_b)` decides whether a node pair is opened, `on_leaf_pair(na, nb)` is
+/// called for leaf pairs that pass `descend`. The node with the larger box (by diagonal) is opened
+/// first; leaves are never opened.
 template <class TreeA, class TreeB, class Descend, class OnLeafPair>
 void traverse_pairs(const TreeA& a, std::uint32_t root_a, const TreeB& b, std::uint32_t root_b, Descend&& descend,
                     OnLeafPair&& on_leaf_pair)
 {
     if (root_a == no_node || root_b == no_node) return;
-    struct Item {
-        std::uint32_t na, nb;
-        Eigen::AlignedBox3d box_a, box_b;
-    };
-    std::vector<Item> stack{{root_a, root_b, a.box(root_a), b.box(root_b)}};
-    while (!stack.empty()) {
-        const Item item = stack.back();
-        stack.pop_back();
-        if (!descend(item.na, item.nb, item.box_a, item.box_b)) continue;
-        const bool leaf_a = a.is_leaf(item.na), leaf_b = b.is_leaf(item.nb);
-        if (leaf_a && leaf_b) {
-            on_leaf_pair(item.na, item.nb);
-            continue;
+    struct Traits {
+        const TreeA& a;
+        const TreeB& b;
+        Descend& descend;
+        OnLeafPair& on_leaf_pair;
+        bool go_further() const { return true; }
+        bool enter(std::uint32_t na, std::uint32_t nb) { return descend(na, nb, a.box(na), b.box(nb)); }
+        Pair_split split(std::uint32_t na, std::uint32_t nb) const
+        {
+            const bool leaf_a = a.is_leaf(na), leaf_b = b.is_leaf(nb);
+            if (leaf_a && leaf_b) return Pair_split::leaves;
+            const bool open_a = !leaf_a && (leaf_b || a.box(na).diagonal().squaredNorm() >= b.box(nb).diagonal().squaredNorm());
+            return open_a ? Pair_split::first : Pair_split::second;
         }
-        const bool open_a = !leaf_a && (leaf_b || item.box_a.diagonal().squaredNorm() >= item.box_b.diagonal().squaredNorm());
-        if (open_a) {
-            const std::uint32_t r = a.right(item.na), l = a.left(item.na);
-            stack.push_back({r, item.nb, a.box(r), item.box_b});
-            stack.push_back({l, item.nb, a.box(l), item.box_b});
-        } else {
-            const std::uint32_t r = b.right(item.nb), l = b.left(item.nb);
-            stack.push_back({item.na, r, item.box_a, b.box(r)});
-            stack.push_back({item.na, l, item.box_a, b.box(l)});
-        }
-    }
+        void leaf_pair(std::uint32_t na, std::uint32_t nb) { on_leaf_pair(na, nb); }
+        bool first_left_first(std::uint32_t, std::uint32_t) const { return true; }
+        bool second_left_first(std::uint32_t, std::uint32_t) const { return true; }
+    } traits{a, b, descend, on_leaf_pair};
+    traverse(a, root_a, b, root_b, traits);
 }
 
 template <class TreeA, class TreeB>
@@ -101,16 +97,22 @@ void self_overlapping_pairs(const Tree& tree, double margin, std::vector<std::pa
         const std::uint32_t i = tree.leaf_primitive(na), j = tree.leaf_primitive(nb);
         if (!primitives_adjacent(tree, i, j)) out.emplace_back(std::min(i, j), std::max(i, j));
     };
-    // Every unordered pair of distinct leaves is met exactly once, under its lowest common ancestor.
-    std::vector<std::uint32_t> stack{tree.root()};
-    while (!stack.empty()) {
-        const std::uint32_t n = stack.back();
-        stack.pop_back();
-        if (tree.is_leaf(n)) continue;
-        traverse_pairs(tree, tree.left(n), tree, tree.right(n), descend, on_leaf_pair);
-        stack.push_back(tree.right(n));
-        stack.push_back(tree.left(n));
-    }
+    // Every unordered pair of distinct leaves is met exactly once, under its lowest common ancestor:
+    // a walk over every node pairs the two subtrees of each inner node.
+    struct Traits {
+        const Tree& tree;
+        decltype(descend)& test;
+        decltype(on_leaf_pair)& report;
+        bool go_further() const { return true; }
+        bool enter(std::uint32_t n)
+        {
+            if (!tree.is_leaf(n)) traverse_pairs(tree, tree.left(n), tree, tree.right(n), test, report);
+            return true;
+        }
+        void leaf(std::uint32_t) {}
+        bool left_first(std::uint32_t) const { return true; }
+    } traits{tree, descend, on_leaf_pair};
+    traverse(tree, tree.root(), traits);
 }
 
 template <class Tree>
@@ -118,18 +120,16 @@ void range_query(const Tree& tree, const Eigen::AlignedBox3d& query, std::vector
 {
     out.clear();
     if (tree.root() == no_node) return;
-    std::vector<std::uint32_t> stack{tree.root()};
-    while (!stack.empty()) {
-        const std::uint32_t n = stack.back();
-        stack.pop_back();
-        if (!boxes_overlap(tree.box(n), query, 0.0)) continue;
-        if (tree.is_leaf(n)) {
-            out.push_back(tree.leaf_primitive(n));
-        } else {
-            stack.push_back(tree.right(n));
-            stack.push_back(tree.left(n));
-        }
-    }
+    struct Traits {
+        const Tree& tree;
+        const Eigen::AlignedBox3d& query;
+        std::vector<std::uint32_t>& out;
+        bool go_further() const { return true; }
+        bool enter(std::uint32_t n) const { return boxes_overlap(tree.box(n), query, 0.0); }
+        void leaf(std::uint32_t n) { out.push_back(tree.leaf_primitive(n)); }
+        bool left_first(std::uint32_t) const { return true; }
+    } traits{tree, query, out};
+    traverse(tree, tree.root(), traits);
 }
 
 /// Entry parameter of the ray into `box` within [s_min, s_max], or nothing. Conservative: the exit
@@ -157,19 +157,22 @@ inline std::optional<double> ray_box_entry(const Kinetic_ray& ray, const Eigen::
     return lo;
 }
 
-/// The first hit of `ray` on the triangles of `tree` (smallest s, then smallest primitive index).
+/// The first hit of `ray` on the triangles of `tree` (smallest s, then smallest primitive index):
+/// a walk that enters a node when the ray meets its box before the best hit so far, the child the
+/// ray enters first first.
 template <class Tree>
 std::optional<Kinetic_ray_hit> first_hit(const Tree& tree, const Kinetic_ray& ray)
 {
-    std::optional<Kinetic_ray_hit> best;
-    if (tree.root() == no_node) return best;
-    std::vector<std::pair<std::uint32_t, double>> stack;
-    if (const auto s = ray_box_entry(ray, tree.box(tree.root()), ray.s_max)) stack.push_back({tree.root(), *s});
-    while (!stack.empty()) {
-        const auto [n, entry] = stack.back();
-        stack.pop_back();
-        if (best && entry > best->s) continue;
-        if (tree.is_leaf(n)) {
+    if (tree.root() == no_node) return std::nullopt;
+    struct Traits {
+        const Tree& tree;
+        const Kinetic_ray& ray;
+        std::optional<Kinetic_ray_hit> best;
+        double limit() const { return best ? best->s : ray.s_max; }
+        bool go_further() const { return true; }
+        bool enter(std::uint32_t n) const { return ray_box_entry(ray, tree.box(n), limit()).has_value(); }
+        void leaf(std::uint32_t n)
+        {
             const std::uint32_t i = tree.leaf_primitive(n);
             const auto& t = tree.primitive(i);
             auto hit = intersect_ray_triangle(ray, tree.vertex_position(t.vertex(0)), tree.vertex_position(t.vertex(1)),
@@ -178,28 +181,16 @@ std::optional<Kinetic_ray_hit> first_hit(const Tree& tree, const Kinetic_ray& ra
                 hit->primitive = i;
                 best = hit;
             }
-            continue;
         }
-        const double limit = best ? best->s : ray.s_max;
-        const std::uint32_t l = tree.left(n), r = tree.right(n);
-        const auto sl = ray_box_entry(ray, tree.box(l), limit);
-        const auto sr = ray_box_entry(ray, tree.box(r), limit);
-        // Push the farther child first so the nearer one is opened first.
-        if (sl && sr) {
-            if (*sl <= *sr) {
-                stack.push_back({r, *sr});
-                stack.push_back({l, *sl});
-            } else {
-                stack.push_back({l, *sl});
-                stack.push_back({r, *sr});
-            }
-        } else if (sl) {
-            stack.push_back({l, *sl});
-        } else if (sr) {
-            stack.push_back({r, *sr});
+        bool left_first(std::uint32_t n) const
+        {
+            const auto sl = ray_box_entry(ray, tree.box(tree.left(n)), limit());
+            const auto sr = ray_box_entry(ray, tree.box(tree.right(n)), limit());
+            return !(sl && sr && *sl > *sr) && !(!sl && sr);
         }
-    }
-    return best;
+    } traits{tree, ray, std::nullopt};
+    traverse(tree, tree.root(), traits);
+    return traits.best;
 }
 
 /// first_hit() of each ray in `rays`, in order, into `out` (cleared first), all through the same
