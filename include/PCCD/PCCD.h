@@ -59,6 +59,9 @@
 
 // The implicit surface and the preprocessed object
 #include <PCCD/Point_cloud_object.h>
+#include <PCCD/Point_cloud_object_class.h>
+#include <PCCD/Point_cloud_object_file.h>
+#include <PCCD/Point_cloud_object_preprocessing.h>
 #include <PCCD/Point_cloud_object_options.h>
 #include <PCCD/Surface/Euclidean_distance.h>
 #include <PCCD/Surface/Gaussian_weight.h>

@@ -1,12 +1,10 @@
 // PCCD/Point_cloud_object_file.h -- the object file format of Point_cloud_object: the
 // definitions of save() and load() and their helpers, through the little-endian binary reader and
-// writer of PCCD/internal/binary_stream.h. Included at the end of PCCD/Point_cloud_object.h, never
-// on its own. Implements doc/manual/surface.md, "One call: Point_cloud_object" (save and load).
+// writer of PCCD/internal/binary_stream.h. Included by PCCD/Point_cloud_object.h. Implements
+// doc/manual/surface.md, "One call: Point_cloud_object" (save and load).
 #pragma once
 
-// Not self-contained on purpose: PCCD/Point_cloud_object.h includes this file after the class
-// definition (the class's out-of-line members, like a .tcc file of a standard library), so this
-// part does not include the class header back.
+#include <PCCD/Point_cloud_object_class.h>
 
 #include <numeric>
 #include <vector>
@@ -266,7 +264,7 @@ Point_cloud_object<K> Point_cloud_object<K>::load_file(const std::string& path, 
     try {
         const auto start = Clock::now();
         Point_cloud<K> cloud(typename Point_cloud<K>::Coordinates(points.template cast<FT>()));
-        timings.kd_tree = ms_since(start);
+        timings.kd_tree = internal::ms_since(start);
         const Gaussian_weight weight(h, theta);
         auto cpsp = std::make_shared<const Close_pairs_shortest_paths>(std::move(geodesic.cpsp));
         auto graph = std::make_shared<const Proximity_graph>(std::move(geodesic.graph));

@@ -15,6 +15,7 @@
 #include <PCCD/Hierarchy/Point_cloud_hierarchy_options.h>
 #include <PCCD/Proximity_graph/graph_options.h>
 #include <PCCD/Surface/surface_options.h>
+#include <PCCD/internal/timing.h>
 #include <PCCD/sampling_radius_options.h>
 
 namespace PCCD {
@@ -147,5 +148,34 @@ struct Scan_estimate {
     /// samples of curved shapes (0.27 on 2000 points of a sphere, 0.43 on a torus).
     double noise = 0.0;
 };
+
+namespace internal {
+
+/// Tells options.progress (if any) that `stage` starts, and, through finish(), that it ended (the
+/// stages of Point_cloud_object's preprocessing).
+class Stage_timer {
+public:
+    Stage_timer(const Point_cloud_object_options& options, Preprocessing_stage stage, std::size_t points)
+        : m_options(options), m_stage(stage), m_points(points)
+    {
+        if (m_options.progress) m_options.progress(Preprocessing_progress{m_stage, false, 0.0, m_points});
+        m_start = Steady_clock::now();
+    }
+    /// The stage's wall-clock time in milliseconds.
+    double finish()
+    {
+        const double ms = ms_since(m_start);
+        if (m_options.progress) m_options.progress(Preprocessing_progress{m_stage, true, ms, m_points});
+        return ms;
+    }
+
+private:
+    const Point_cloud_object_options& m_options;
+    Preprocessing_stage m_stage;
+    std::size_t m_points;
+    Steady_clock::time_point m_start;
+};
+
+} // namespace internal
 
 } // namespace PCCD

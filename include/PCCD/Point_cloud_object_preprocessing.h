@@ -1,14 +1,12 @@
 // PCCD/Point_cloud_object_preprocessing.h -- the preprocessing pipeline of
 // Point_cloud_object: the definitions of its private stages (input checks and point order, outlier
 // removal, kernel with CPSP map and normals, orientation, domain, the surfaces and the hierarchy).
-// Included at the end of PCCD/Point_cloud_object.h, never on its own. Implements
+// Included by PCCD/Point_cloud_object.h. Implements
 // doc/manual/surface.md, "One call: Point_cloud_object" and "Scans: where the surface is defined,
 // noise and outliers".
 #pragma once
 
-// Not self-contained on purpose: PCCD/Point_cloud_object.h includes this file after the class
-// definition (the class's out-of-line members, like a .tcc file of a standard library), so this
-// part does not include the class header back.
+#include <PCCD/Point_cloud_object_class.h>
 
 #include <algorithm>
 #include <memory>
@@ -33,7 +31,7 @@ auto Point_cloud_object<K>::make_data(Point_cloud<K> cloud, std::shared_ptr<cons
     Geodesic_surface geodesic(Geodesic_distance<K>(cloud, cpsp), weight, normals, domain, options.surface_fit);
     Euclidean_surface euclidean(Euclidean_distance<K>(cloud), weight, std::move(normals), std::move(domain),
                                 options.surface_fit);
-    Stage stage(options, Preprocessing_stage::hierarchy, cloud.size());
+    internal::Stage_timer stage(options, Preprocessing_stage::hierarchy, cloud.size());
     Point_cloud_hierarchy hierarchy = layout ? Point_cloud_hierarchy(*layout, cloud.coordinates(), reach, options.hierarchy.threads)
                                              : Point_cloud_hierarchy(cloud.coordinates(), reach, options.hierarchy);
     timings.hierarchy = stage.finish();
@@ -108,13 +106,13 @@ Gaussian_weight Point_cloud_object<K>::fit_kernel(const Point_cloud<K>& cloud, c
     // At most twice: a second time when the noise estimate asks for a wider kernel than the
     // sampling radius alone (automatic bandwidth only).
     for (int pass = 0; pass < 2; ++pass) {
-        Stage cpsp_stage(options, Preprocessing_stage::cpsp_map, cloud.size());
+        internal::Stage_timer cpsp_stage(options, Preprocessing_stage::cpsp_map, cloud.size());
         // The map must hold every point within the kernel's support radius R; its bound is
         // support * r, so support = R / r (eta itself for the automatic bandwidth).
         cpsp = std::make_shared<const Close_pairs_shortest_paths>(
             graph, r, Cpsp_options{.support = weight.support_radius() / r, .threads = options.threads});
         timings.cpsp += cpsp_stage.finish();
-        Stage normals_stage(options, Preprocessing_stage::normals, cloud.size());
+        internal::Stage_timer normals_stage(options, Preprocessing_stage::normals, cloud.size());
         estimate = estimate_normals(Geodesic_distance<K>(cloud, cpsp), weight, options.threads);
         scan.noise = PCCD::noise_estimate(estimate);
         timings.normals += normals_stage.finish();
@@ -142,7 +140,7 @@ auto Point_cloud_object<K>::preprocess(Timed_cloud built, std::optional<Eigen::M
     // use the same k, the domain radii below.
     std::optional<Local_spacing> spacing;
     {
-        Stage stage(options, Preprocessing_stage::outliers, cloud.size());
+        internal::Stage_timer stage(options, Preprocessing_stage::outliers, cloud.size());
         if (options.outliers.remove) {
             spacing = local_spacing(cloud, options.outliers.neighbors, true, options.outliers.threads);
             scan.outliers = find_outliers(*spacing, options.outliers);
@@ -154,14 +152,14 @@ auto Point_cloud_object<K>::preprocess(Timed_cloud built, std::optional<Eigen::M
 
     std::shared_ptr<const Proximity_graph> graph;
     {
-        Stage stage(options, Preprocessing_stage::graph, cloud.size());
+        internal::Stage_timer stage(options, Preprocessing_stage::graph, cloud.size());
         graph = std::make_shared<const Proximity_graph>(options.graph == Graph_kind::knn
                                                             ? knn_graph(cloud, options.knn)
                                                             : sphere_of_influence_graph(cloud, options.sphere_of_influence));
         timings.graph = stage.finish();
     }
 
-    Stage radius_stage(options, Preprocessing_stage::sampling_radius, cloud.size());
+    internal::Stage_timer radius_stage(options, Preprocessing_stage::sampling_radius, cloud.size());
     const double r = PCCD::sampling_radius(cloud, options.sampling_radius);
     timings.sampling_radius = radius_stage.finish();
 
@@ -169,12 +167,12 @@ auto Point_cloud_object<K>::preprocess(Timed_cloud built, std::optional<Eigen::M
     Normal_estimate estimate;
     const Gaussian_weight weight = fit_kernel(cloud, *graph, r, options, cpsp, estimate, scan, timings);
 
-    Stage orientation_stage(options, Preprocessing_stage::orientation, cloud.size());
+    internal::Stage_timer orientation_stage(options, Preprocessing_stage::orientation, cloud.size());
     const Orientation_report orientation =
         given_normals ? orient_normals_with_hints(*graph, cloud.coordinates(), estimate.normals, *given_normals)
                       : orient_normals(*graph, cloud.coordinates(), estimate.normals);
     timings.normals += orientation_stage.finish();
-    Stage domain_stage(options, Preprocessing_stage::domain, cloud.size());
+    internal::Stage_timer domain_stage(options, Preprocessing_stage::domain, cloud.size());
     const bool reuse = spacing && spacing->k == std::min<std::size_t>(options.domain.neighbors, cloud.size() - 1);
     Eigen::VectorXd domain = reuse ? surface_domain_radii(*spacing, options.domain)
                                    : surface_domain_radii(cloud, options.domain);

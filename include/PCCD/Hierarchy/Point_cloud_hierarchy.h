@@ -36,25 +36,6 @@
 
 namespace PCCD {
 
-/// The name of a bounding volume ("box_and_slab", "box", "sphere").
-inline const char* to_string(Bounding_volume v)
-{
-    switch (v) {
-    case Bounding_volume::box_and_slab: return "box_and_slab";
-    case Bounding_volume::box: return "box";
-    case Bounding_volume::sphere: return "sphere";
-    }
-    return "unknown";
-}
-
-/// The bounding volume whose to_string() is `name`; std::nullopt for any other name.
-inline std::optional<Bounding_volume> bounding_volume_from_string(std::string_view name)
-{
-    for (const auto v : {Bounding_volume::box_and_slab, Bounding_volume::box, Bounding_volume::sphere})
-        if (name == to_string(v)) return v;
-    return std::nullopt;
-}
-
 /// A static bounding-volume tree over the points of a cloud.
 ///
 /// Node 0 is the root; nodes are stored in depth-first order, so an inner node's left child follows
@@ -335,30 +316,10 @@ private:
     /// parallel_points points in parallel, into an array of the predicted size. If such a leaf
     /// turns up, the tree is built again sequentially from the original order (the same tree either
     /// way; no copies of the node array in the common case).
-    void build_tree(const Eigen::Matrix3Xd& points)
-    {
-        const Index n = Index(points.cols());
-        std::vector<std::pair<Index, std::size_t>> memo;
-        m_nodes.assign(predicted_nodes(n, memo), Node{});
-        bool complete = true;
-        build_in_place(points, 0, n, 0, parallel_depth, memo, complete);
-        if (complete) return;
-        std::iota(m_order.begin(), m_order.end(), Index(0));
-        m_nodes.clear();
-        build(points, 0, n, m_nodes);
-        m_nodes.shrink_to_fit();
-    }
+    void build_tree(const Eigen::Matrix3Xd& points);
 
     /// The number of nodes of a subtree of `count` points whose points never all coincide.
-    std::size_t predicted_nodes(Index count, std::vector<std::pair<Index, std::size_t>>& memo) const
-    {
-        if (count <= m_leaf_size) return 1;
-        for (const auto& [c, nodes] : memo)
-            if (c == count) return nodes;
-        const std::size_t nodes = 1 + predicted_nodes(count / 2, memo) + predicted_nodes(count - count / 2, memo);
-        memo.emplace_back(count, nodes);
-        return nodes;
-    }
+    std::size_t predicted_nodes(Index count, std::vector<std::pair<Index, std::size_t>>& memo) const;
 
     /// Builds the subtree over m_order[first, last) as node `id` of m_nodes and the nodes after it
     /// (their places predicted). Sets `complete` to false at a leaf the prediction did not foresee
@@ -366,249 +327,52 @@ private:
     /// build_tree()). Only the nodes of one subtree write its `complete`, one after another (a node
     /// writes it after its children's tasks have joined; a right half has its own flag).
     void build_in_place(const Eigen::Matrix3Xd& points, Index first, Index last, std::size_t id, int depth,
-                        const std::vector<std::pair<Index, std::size_t>>& memo, bool& complete)
-    {
-        Node& node = m_nodes[id];
-        const Index middle = split(points, first, last, node);
-        if (middle == last) {
-            if (node.count > m_leaf_size) complete = false; // coincident points: not the predicted shape
-            return;
-        }
-        const Index left_count = middle - first;
-        std::size_t left_nodes = 1;
-        if (left_count > m_leaf_size)
-            for (const auto& [c, nodes] : memo)
-                if (c == left_count) left_nodes = nodes;
-        node.right = Index(id + 1 + left_nodes);
-        const auto left = [&] { build_in_place(points, first, middle, id + 1, depth - 1, memo, complete); };
-        bool right_complete = true;
-        const auto right = [&] { build_in_place(points, middle, last, node.right, depth - 1, memo, right_complete); };
-        if (depth > 0 && last - first > parallel_points) {
-            internal::parallel_invoke(left, right);
-        } else {
-            left();
-            right();
-        }
-        if (!right_complete) complete = false;
-    }
+                        const std::vector<std::pair<Index, std::size_t>>& memo, bool& complete);
 
     /// Appends the subtree over m_order[first, last) to `nodes` (absolute indices). Returns its root.
-    Index build(const Eigen::Matrix3Xd& points, Index first, Index last, std::vector<Node>& nodes)
-    {
-        const Index id = Index(nodes.size());
-        nodes.push_back(Node{});
-        Node node;
-        const Index middle = split(points, first, last, node);
-        nodes[id] = node;
-        if (middle == last) return id;
-        build(points, first, middle, nodes);
-        nodes[id].right = build(points, middle, last, nodes);
-        return id;
-    }
+    Index build(const Eigen::Matrix3Xd& points, Index first, Index last, std::vector<Node>& nodes);
 
     /// Sets `node`'s range and box over m_order[first, last) and, unless it is a leaf (at most
     /// leaf_size points, or all coincide), splits the range at its median along the box's longest
     /// side. Returns the start of the right half (`last` for a leaf).
-    Index split(const Eigen::Matrix3Xd& points, Index first, Index last, Node& node)
-    {
-        Eigen::AlignedBox3d box;
-        for (Index k = first; k < last; ++k) box.extend(points.col(m_order[k]));
-        node.box = box;
-        node.first = first;
-        node.count = last - first;
-        if (std::size_t(last - first) <= m_leaf_size) return last;
-        Eigen::Index axis = 0;
-        box.sizes().maxCoeff(&axis);
-        if (!(box.sizes()(axis) > 0.0)) return last; // all points coincide: one leaf, whatever its size
-        const Index middle = first + (last - first) / 2;
-        // Ties broken by index so that the tree does not depend on the standard library's algorithm.
-        std::nth_element(m_order.begin() + first, m_order.begin() + middle, m_order.begin() + last,
-                         [&](Index a, Index b) {
-                             const double ca = points(axis, a), cb = points(axis, b);
-                             return ca < cb || (ca == cb && a < b);
-                         });
-        return middle;
-    }
+    Index split(const Eigen::Matrix3Xd& points, Index first, Index last, Node& node);
 
     /// Throws unless `layout` is that of a median-split tree over n points (see its constructor).
-    static void check_layout(const Layout& layout, std::size_t n)
-    {
-        const auto fail = [](auto&&... what) {
-            throw Invalid_input(internal::concat("point cloud hierarchy layout: ", what...));
-        };
-        if (layout.order.size() != n) fail(layout.order.size(), " indices in the order for ", n, " points");
-        std::vector<bool> seen(n, false);
-        for (const Index k : layout.order) {
-            if (k >= n || seen[k]) fail("the order is not a permutation of the points (index ", k, ")");
-            seen[k] = true;
-        }
-        const std::size_t m = layout.counts.size();
-        if (m == 0 || layout.rights.size() != m) fail(m, " node counts and ", layout.rights.size(), " right children");
-        if (layout.counts[0] != n) fail("the root holds ", layout.counts[0], " of ", n, " points");
-        if (int(layout.volume) > int(Bounding_volume::sphere)) fail("unknown bounding volume ", int(layout.volume));
-        if (layout.leaf_size == 0) fail("leaf_size 0");
-        // end[i]: one past the last node of i's subtree; nodes are depth-first, children after parents.
-        std::vector<std::size_t> end(m);
-        for (std::size_t i = m; i-- > 0;) {
-            const Index r = layout.rights[i], c = layout.counts[i];
-            if (r == no_child) {
-                end[i] = i + 1;
-                continue;
-            }
-            if (!(r > i + 1 && r < m) || end[i + 1] != r)
-                fail("node ", i, ": right child ", r, " is not where its left subtree ends");
-            if (c <= layout.leaf_size || layout.counts[i + 1] != c / 2 || layout.counts[r] != c - c / 2)
-                fail("node ", i, " of ", c, " points is not split at its median");
-            end[i] = end[r];
-        }
-        if (end[0] != m) fail(m - end[0], " nodes outside the tree");
-    }
+    static void check_layout(const Layout& layout, std::size_t n);
 
     /// Points and reaches in hierarchy order (checked already).
-    void order_points(const Eigen::Matrix3Xd& coordinates, const Eigen::VectorXd& reach)
-    {
-        const std::size_t n = m_order.size();
-        m_ordered.resize(4, Eigen::Index(n));
-        for (std::size_t k = 0; k < n; ++k) {
-            m_ordered.col(Eigen::Index(k)).head<3>() = coordinates.col(m_order[k]);
-            m_ordered(3, Eigen::Index(k)) = reach.size() == 0 ? 0.0 : reach(m_order[k]);
-        }
-    }
+    void order_points(const Eigen::Matrix3Xd& coordinates, const Eigen::VectorXd& reach);
 
     /// Every node's tight box from the ordered points, bottom-up (children follow their parents in
     /// depth-first order, so a backward sweep sees children first).
-    void node_boxes()
-    {
-        for (std::size_t i = m_nodes.size(); i-- > 0;) {
-            Node& node = m_nodes[i];
-            if (node.is_leaf()) {
-                const auto block = m_ordered.middleCols(node.first, node.count).template topRows<3>();
-                node.box = Eigen::AlignedBox3d(block.rowwise().minCoeff(), block.rowwise().maxCoeff());
-            } else {
-                node.box = m_nodes[left(Index(i))].box.merged(m_nodes[node.right].box);
-            }
-        }
-    }
+    void node_boxes();
 
     /// Every node's largest reach, bottom-up.
-    void node_reaches()
-    {
-        for (std::size_t i = m_nodes.size(); i-- > 0;) {
-            Node& node = m_nodes[i];
-            node.reach = node.is_leaf() ? m_ordered.row(3).segment(node.first, node.count).maxCoeff()
-                                        : std::max(m_nodes[left(Index(i))].reach, m_nodes[node.right].reach);
-        }
-    }
+    void node_reaches();
 
     /// Node reaches, and the slabs or spheres the volume asks for (the points ordered, the boxes set).
-    void finish()
-    {
-        node_reaches();
-        if (m_volume == Bounding_volume::box_and_slab) compute_slabs();
-        if (m_volume == Bounding_volume::sphere) compute_spheres();
-    }
+    void finish();
 
     /// The slab of every node: the points' second moments are summed bottom-up (relative to the
     /// root box's centre), the normal is their covariance's smallest eigenvector, and the interval
     /// is taken over the node's points. O(N log N), in parallel over nodes.
-    void compute_slabs()
-    {
-        const Eigen::Vector3d origin = m_nodes.front().box.center();
-        struct Moments {
-            Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-            Eigen::Matrix3d squares = Eigen::Matrix3d::Zero();
-        };
-        std::vector<Moments> moments(m_nodes.size());
-        for (std::size_t i = m_nodes.size(); i-- > 0;) {
-            const Node& node = m_nodes[i];
-            Moments& m = moments[i];
-            if (node.is_leaf()) {
-                for (Index k = node.first; k < node.first + node.count; ++k) {
-                    const Eigen::Vector3d p = m_ordered.col(k).head<3>() - origin;
-                    m.sum += p;
-                    m.squares += p * p.transpose();
-                }
-            } else {
-                const Moments& a = moments[left(Index(i))];
-                const Moments& b = moments[node.right];
-                m.sum = a.sum + b.sum;
-                m.squares = a.squares + b.squares;
-            }
-        }
-        internal::parallel_for_ranges(m_nodes.size(), 256, [&](std::size_t begin, std::size_t end) {
-            Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
-            for (std::size_t i = begin; i < end; ++i) {
-                Node& node = m_nodes[i];
-                const Eigen::Vector3d mean = moments[i].sum / double(node.count);
-                const Eigen::Matrix3d covariance = moments[i].squares / double(node.count) - mean * mean.transpose();
-                solver.computeDirect(covariance);
-                Eigen::Vector3d normal = solver.eigenvectors().col(0);
-                if (solver.info() != Eigen::Success || !internal::all_finite(normal) || !(normal.norm() > 0.5)) continue;
-                normal.normalize();
-                double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-                for (Index k = node.first; k < node.first + node.count; ++k) {
-                    const double d = normal.dot(m_ordered.col(k).head<3>());
-                    lo = std::min(lo, d);
-                    hi = std::max(hi, d);
-                }
-                node.slab_normal = normal;
-                node.slab_min = lo;
-                node.slab_max = hi;
-            }
-        });
-    }
+    void compute_slabs();
 
     /// The sphere of every node: centred at the centroid of its points or at its box centre,
     /// whichever gives the smaller ball holding them. O(N log N), in parallel over nodes.
-    void compute_spheres()
-    {
-        m_spheres.assign(m_nodes.size(), Sphere{});
-        internal::parallel_for_ranges(m_nodes.size(), 256, [&](std::size_t begin, std::size_t end) {
-            for (std::size_t i = begin; i < end; ++i) {
-                const Node& node = m_nodes[i];
-                const Sphere a = sphere_of_points(node, centroid(node)), b = sphere_of_points(node, node.box.center());
-                m_spheres[i] = a.radius <= b.radius ? a : b;
-            }
-        });
-    }
+    void compute_spheres();
 
-    Eigen::Vector3d centroid(const Node& node) const
-    {
-        return m_ordered.middleCols(node.first, node.count).template topRows<3>().rowwise().mean();
-    }
+    Eigen::Vector3d centroid(const Node& node) const;
 
     /// The smallest ball centred at `centre` that holds the node's points.
-    Sphere sphere_of_points(const Node& node, const Eigen::Vector3d& centre) const
-    {
-        double largest = 0.0;
-        for (Index k = node.first; k < node.first + node.count; ++k)
-            largest = std::max(largest, (m_ordered.col(k).head<3>() - centre).squaredNorm());
-        // A few ulps more, so that rounding in a distance computed elsewhere cannot put a point outside.
-        return {centre, std::sqrt(largest) * (1.0 + 8.0 * std::numeric_limits<double>::epsilon())};
-    }
+    Sphere sphere_of_points(const Node& node, const Eigen::Vector3d& centre) const;
 
     /// The smallest ball holding the balls a and b.
-    static Sphere enclosing(const Sphere& a, const Sphere& b)
-    {
-        const Eigen::Vector3d d = b.centre - a.centre;
-        const double distance = d.norm();
-        if (distance + b.radius <= a.radius) return a;
-        if (distance + a.radius <= b.radius) return b;
-        const double radius = 0.5 * (distance + a.radius + b.radius);
-        // Rounding: the radius is grown by a few ulps of the scale so that both balls stay inside.
-        const double scale = distance + a.radius + b.radius + a.centre.cwiseAbs().maxCoeff();
-        return {a.centre + ((radius - a.radius) / distance) * d, radius + 4.0 * std::numeric_limits<double>::epsilon() * scale};
-    }
+    static Sphere enclosing(const Sphere& a, const Sphere& b);
 
     /// The tree's height: nodes are stored in depth-first order (children after their parent), so
     /// one pass from the last node to the root sees both children before the parent.
-    std::size_t height_of_tree() const
-    {
-        std::vector<std::size_t> heights(m_nodes.size(), 1);
-        for (std::size_t i = m_nodes.size(); i-- > 0;)
-            if (!m_nodes[i].is_leaf()) heights[i] = 1 + std::max(heights[left(Index(i))], heights[right(Index(i))]);
-        return heights.front();
-    }
+    std::size_t height_of_tree() const;
 
     std::vector<Node> m_nodes;
     std::vector<Index> m_order;
@@ -620,3 +384,5 @@ private:
 };
 
 } // namespace PCCD
+
+#include <PCCD/Hierarchy/internal/Point_cloud_hierarchy_build.h>

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <string_view>
 
 namespace PCCD {
 
@@ -28,6 +29,25 @@ enum class Bounding_volume : std::uint8_t {
     /// (unless the other hierarchy of the pair is box-based).
     sphere = 2,
 };
+
+/// The name of a bounding volume ("box_and_slab", "box", "sphere").
+inline const char* to_string(Bounding_volume v)
+{
+    switch (v) {
+    case Bounding_volume::box_and_slab: return "box_and_slab";
+    case Bounding_volume::box: return "box";
+    case Bounding_volume::sphere: return "sphere";
+    }
+    return "unknown";
+}
+
+/// The bounding volume whose to_string() is `name`; std::nullopt for any other name.
+inline std::optional<Bounding_volume> bounding_volume_from_string(std::string_view name)
+{
+    for (const auto v : {Bounding_volume::box_and_slab, Bounding_volume::box, Bounding_volume::sphere})
+        if (name == to_string(v)) return v;
+    return std::nullopt;
+}
 
 /// Options of Point_cloud_hierarchy.
 struct Point_cloud_hierarchy_options {

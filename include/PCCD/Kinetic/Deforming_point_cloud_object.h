@@ -38,6 +38,7 @@
 #include <PCCD/concepts/PointCloudKernel.h>
 #include <PCCD/internal/finite.h>
 #include <PCCD/internal/parallel.h>
+#include <PCCD/internal/timing.h>
 
 namespace PCCD {
 
@@ -150,14 +151,14 @@ public:
             report.rebuilt = true;
             ++report.rebuilds;
             report.min_stretch = report.max_stretch = 1.0;
-            report.milliseconds = ms_since(start);
+            report.milliseconds = internal::ms_since(start);
             auto frame = std::make_shared<Frame>(*m_frame);
             frame->report = report;
             m_frame = std::move(frame);
             return m_frame->report;
         }
         m_frame = make_frame(std::move(current), stretch, report);
-        m_frame->report.milliseconds = ms_since(start);
+        m_frame->report.milliseconds = internal::ms_since(start);
         return m_frame->report;
     }
 
@@ -234,11 +235,6 @@ private:
         const Eigen::Matrix3Xd* points;
         friend Eigen::Vector3d get(const Column_map& m, std::size_t i) { return m.points->col(Eigen::Index(i)); }
     };
-
-    static double ms_since(std::chrono::steady_clock::time_point start)
-    {
-        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    }
 
     static Point_cloud_object_options in_given_order(Point_cloud_object_options options)
     {
