@@ -1,10 +1,15 @@
 // Tests of Point_cloud_object (doc/design.md, "Map, in data-flow order": the whole preprocessed
 // object): one-call preprocessing, its reported state, and saving and loading (bit-for-bit round
 // trip, corrupted and foreign files rejected).
+// Also covers Point_cloud_object_class.h, Point_cloud_object_file.h, Point_cloud_object_options.h, Point_cloud_object_preprocessing.h: the test cases below exercise what they declare.
 #include "Hierarchy/hierarchy_compare.h"
 #include "surface_test_helpers.h"
 
 #include <PCCD/Point_cloud_object.h>
+#include <PCCD/Point_cloud_object_class.h>
+#include <PCCD/Point_cloud_object_file.h>
+#include <PCCD/Point_cloud_object_options.h>
+#include <PCCD/Point_cloud_object_preprocessing.h>
 #include <PCCD/make_point_cloud_object.h>
 
 #include <catch2/catch.hpp>

@@ -1,5 +1,7 @@
 // Point_cloud and Kd_tree against brute force on random, duplicated, planar and collinear inputs,
 // in float and double.
+// Also covers Kd_tree.h: the test cases below exercise what it declares.
+#include <PCCD/Kd_tree.h>
 #include <PCCD/Point_cloud.h>
 #include <PCCD/Random.h>
 

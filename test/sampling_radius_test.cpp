@@ -1,10 +1,12 @@
 // Tests of PCCD/sampling_radius.h: the Monte-Carlo r(P) and r(P') against a dense Monte-Carlo ground
 // truth on a uniform sphere sample (where the true surface is known), the subsample rule, the
 // surfel count, determinism and option checks.
+// Also covers sampling_radius_options.h: the test cases below exercise what it declares.
 #include "graph_test_helpers.h"
 
 #include <PCCD/Error.h>
 #include <PCCD/sampling_radius.h>
+#include <PCCD/sampling_radius_options.h>
 
 #include <catch2/catch.hpp>
 

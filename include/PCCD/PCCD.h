@@ -29,6 +29,7 @@
 #include <PCCD/concepts/ReadablePointMap.h>
 #include <PCCD/concepts/SurfaceDistance.h>
 #include <PCCD/concepts/SurfaceWeight.h>
+#include <PCCD/concepts/TreeWalk.h>
 
 // Plain data of files (reading and writing them needs CGAL: PCCD/IO/read_*.h, write_*.h)
 #include <PCCD/IO/Format.h>
@@ -52,10 +53,12 @@
 #include <PCCD/Geodesic/geodesic_io.h>
 #include <PCCD/Proximity_graph/Proximity_graph.h>
 #include <PCCD/Proximity_graph/graph_components.h>
+#include <PCCD/Proximity_graph/graph_options.h>
 #include <PCCD/Proximity_graph/knn_graph.h>
 #include <PCCD/Proximity_graph/prune_long_edges.h>
 #include <PCCD/Proximity_graph/sphere_of_influence_graph.h>
 #include <PCCD/sampling_radius.h>
+#include <PCCD/sampling_radius_options.h>
 
 // The implicit surface and the preprocessed object
 #include <PCCD/Point_cloud_object.h>
@@ -73,18 +76,26 @@
 #include <PCCD/Surface/local_spacing.h>
 #include <PCCD/Surface/orient_normals.h>
 #include <PCCD/Surface/outliers.h>
+#include <PCCD/Surface/surface_options.h>
 #include <PCCD/Surface/surface_domain.h>
 #include <PCCD/make_point_cloud_object.h>
 
 // Hierarchy and intersection queries
 #include <PCCD/Hierarchy/Point_cloud_hierarchy.h>
+#include <PCCD/Hierarchy/Point_cloud_hierarchy_options.h>
+#include <PCCD/Hierarchy/Reach_rule.h>
 #include <PCCD/Hierarchy/Sphere_covering.h>
+#include <PCCD/Hierarchy/node_pair_tests.h>
 #include <PCCD/Hierarchy/overlapping_leaves.h>
+#include <PCCD/Hierarchy/point_queries.h>
 #include <PCCD/Hierarchy/reach_traversal.h>
+#include <PCCD/Hierarchy/traversal.h>
 #include <PCCD/Intersection/Interpolation_search.h>
 #include <PCCD/Intersection/Intersection_options.h>
 #include <PCCD/Intersection/Intersection_result.h>
 #include <PCCD/Intersection/Intersection_visitor.h>
+#include <PCCD/Intersection/Posed_object.h>
+#include <PCCD/Intersection/Query_state.h>
 #include <PCCD/Intersection/Randomized_sampling.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Intersection/do_intersect_many.h>

@@ -5,7 +5,9 @@
 // sphere volumes: every sphere holds its node's points (built and refitted), a box tree has no
 // slabs. A hierarchy rebuilt from its layout is the build, bit for bit, and a layout that is not a
 // median-split tree of the points is refused; the build does not depend on the thread count.
+// Also covers Hierarchy/Point_cloud_hierarchy_options.h: the test cases below exercise what it declares.
 #include <PCCD/Hierarchy/Point_cloud_hierarchy.h>
+#include <PCCD/Hierarchy/Point_cloud_hierarchy_options.h>
 
 #include <catch2/catch.hpp>
 

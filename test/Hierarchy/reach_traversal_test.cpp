@@ -3,6 +3,10 @@
 // for_each_leaf_pair_within_reach (both margins: sum and larger reach), for random clouds, reaches,
 // rules and poses, in both child orders, for every bounding volume and mixed pairs of them; the slabs
 // prune node pairs of tilted flat patches.
+// Also covers Hierarchy/Reach_rule.h, Hierarchy/node_pair_tests.h, Hierarchy/point_queries.h: the test cases below exercise what they declare.
+#include <PCCD/Hierarchy/Reach_rule.h>
+#include <PCCD/Hierarchy/node_pair_tests.h>
+#include <PCCD/Hierarchy/point_queries.h>
 #include <PCCD/Hierarchy/reach_traversal.h>
 
 #include <catch2/catch.hpp>

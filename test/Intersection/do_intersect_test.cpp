@@ -1,8 +1,11 @@
 // Tests of the point cloud hierarchy, the overlap region and the stochastic intersection queries
 // (doc/manual/intersection.md) against independent truths: brute force over leaves and points, and
 // two analytic spheres whose intersection circle is known in closed form.
+// Also covers Intersection/Interpolation_search.h, Intersection/Intersection_options.h: the test cases below exercise what they declare.
 #include <PCCD/Hierarchy/Point_cloud_hierarchy.h>
 #include <PCCD/Hierarchy/overlapping_leaves.h>
+#include <PCCD/Intersection/Interpolation_search.h>
+#include <PCCD/Intersection/Intersection_options.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>

@@ -2,7 +2,9 @@
 // against one rebuilt from the moved points at random times (normals, f, zero set; fixed seeds,
 // stated tolerances), exact invariance under rigid motions, the verdicts of the contact scene
 // against a rebuild, the stretch rule, and bad input.
+// Also covers Kinetic/Deformation.h: the test cases below exercise what it declares.
 #include <PCCD/Intersection/do_intersect.h>
+#include <PCCD/Kinetic/Deformation.h>
 #include <PCCD/Kinetic/Deforming_point_cloud_object.h>
 #include <PCCD/Kinetic/Linear_flightplan.h>
 #include <PCCD/Random.h>

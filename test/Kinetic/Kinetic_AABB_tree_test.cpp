@@ -4,8 +4,10 @@
 // same after flightplan changes and after insertions and removals; the number of events over an
 // animation with linear flightplans stays within the stated bound; ties and simultaneous events are
 // deterministic; the event queue agrees with an ordered set.
+// Also covers Kinetic/Kinetic_statistics.h: the test cases below exercise what it declares.
 #include <PCCD/Kinetic/Event_queue.h>
 #include <PCCD/Kinetic/Kinetic_AABB_tree.h>
+#include <PCCD/Kinetic/Kinetic_statistics.h>
 #include <PCCD/Kinetic/Linear_flightplan.h>
 #include <PCCD/Kinetic/Polynomial_flightplan.h>
 #include <PCCD/Kinetic/Refit_AABB_tree.h>

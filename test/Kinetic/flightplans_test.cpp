@@ -3,10 +3,13 @@
 // closed forms, exact integer key frames, motions with crossings at known times, next_crossing's
 // definition evaluated over the negative intervals of the difference, Eigen's polynomial solver
 // and dense sampling. Crossings at key-frame boundaries must be found exactly once.
+// Also covers Kinetic/Cubic.h, Kinetic/next_crossing.h: the test cases below exercise what they declare.
+#include <PCCD/Kinetic/Cubic.h>
 #include <PCCD/Kinetic/Kinetic_primitives.h>
 #include <PCCD/Kinetic/Linear_flightplan.h>
 #include <PCCD/Kinetic/Piecewise_linear_flightplan.h>
 #include <PCCD/Kinetic/Polynomial_flightplan.h>
+#include <PCCD/Kinetic/next_crossing.h>
 #include <PCCD/Random.h>
 #include <PCCD/concepts/Flightplan.h>
 #include <PCCD/concepts/KineticPrimitive.h>
@@ -487,4 +490,27 @@ TEST_CASE("invalid flightplans are rejected with a message", "[kinetic][flightpl
     CHECK_THROWS_AS(Polynomial_flightplan::hermite({0, 1}, two, {Eigen::Vector3d::Zero()}), PCCD::Invalid_input);
     const Eigen::Vector3d z = Eigen::Vector3d::Zero();
     CHECK_THROWS_WITH(Polynomial_flightplan({z, z, Eigen::Vector3d(0, NAN, 0), z}), Catch::Contains("c2"));
+}
+
+TEST_CASE("Cubic: evaluation, Taylor shift, difference and degree against direct polynomials", "[kinetic][flightplan]")
+{
+    PCCD::Random_engine engine(17);
+    for (int k = 0; k < 200; ++k) {
+        PCCD::Cubic p;
+        for (double& c : p.c) c = PCCD::uniform_real(engine, -3.0, 3.0);
+        const double u = PCCD::uniform_real(engine, -2.0, 2.0), delta = PCCD::uniform_real(engine, -2.0, 2.0);
+        const double direct = p.c[0] + p.c[1] * u + p.c[2] * u * u + p.c[3] * u * u * u;
+        CHECK(p(u) == Approx(direct).margin(1e-12));
+        // The shifted cubic at v equals the original at v + delta.
+        CHECK(p.shifted(delta)(u) == Approx(p(u + delta)).margin(1e-9));
+        PCCD::Cubic q;
+        for (double& c : q.c) c = PCCD::uniform_real(engine, -3.0, 3.0);
+        CHECK((p - q)(u) == Approx(p(u) - q(u)).margin(1e-12));
+    }
+    PCCD::Cubic line;
+    line.c = {1.0, 2.0, 0.0, 0.0};
+    CHECK(line.degree() == 1);
+    CHECK(PCCD::Cubic{}.degree() == -1);
+    CHECK((line - line).degree() == -1);
+    CHECK(line.shifted(0.0).c == line.c);
 }

@@ -4,7 +4,9 @@
 // kinetic tree and both baselines; the traversal hook visits the same leaf pairs; point clouds with
 // a proximity margin; the ray casts of run_kinetic_scene give the same hits with every method, and
 // its query box the primitives of brute force.
+// Also covers Kinetic/Kinetic_ray.h: the test cases below exercise what it declares.
 #include <PCCD/Kinetic/Kinetic_AABB_tree.h>
+#include <PCCD/Kinetic/Kinetic_ray.h>
 #include <PCCD/Kinetic/Refit_AABB_tree.h>
 #include <PCCD/Kinetic/boxes_overlap.h>
 #include <PCCD/Kinetic/intersect_ray_triangle.h>

@@ -1,12 +1,14 @@
 // Tests of PCCD/Proximity_graph: k-NN, SIG and r-SIG against a brute-force evaluation of their
 // definitions, determinism across thread counts, other Boost.Graph models, coincident points and the
 // long-edge test.
+// Also covers Proximity_graph/graph_options.h: the test cases below exercise what it declares.
 #include "build_helpers.h"
 #include "graph_test_helpers.h"
 
 #include <PCCD/Error.h>
 #include <PCCD/Proximity_graph/Proximity_graph.h>
 #include <PCCD/Proximity_graph/graph_components.h>
+#include <PCCD/Proximity_graph/graph_options.h>
 #include <PCCD/Proximity_graph/knn_graph.h>
 #include <PCCD/Proximity_graph/prune_long_edges.h>
 #include <PCCD/Proximity_graph/sphere_of_influence_graph.h>

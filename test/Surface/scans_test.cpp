@@ -3,6 +3,7 @@
 // the object file. Every truth is independent of the code under test: brute-force neighbour
 // searches, analytic shapes, points injected at known indices, and the closed-form circle where
 // two spheres meet.
+// Also covers Surface/surface_options.h: the test cases below exercise what it declares.
 #include "build_helpers.h"
 #include "surface_test_helpers.h"
 
@@ -18,6 +19,7 @@
 #include <PCCD/Surface/local_spacing.h>
 #include <PCCD/Surface/outliers.h>
 #include <PCCD/Surface/surface_domain.h>
+#include <PCCD/Surface/surface_options.h>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>

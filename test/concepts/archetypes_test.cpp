@@ -11,32 +11,35 @@
 // ReadablePointMap (Point_cloud_object, then the queries),
 // PointGraph, ProximityGraph, EdgeFlagMap and WritableEdgeFlagMap (orient_normals, Paths_on_the_fly,
 // graph_components, mark_long_edges, the CPSP map with both bounded Dijkstras). The kinetic concepts have their own file, concepts/kinetic_archetypes_test.cpp.
+// Also covers Intersection/Posed_object.h, Intersection/Query_state.h: the test cases below exercise what they declare.
 #include "surface_test_helpers.h"
 
+#include <PCCD/Geodesic/Close_pairs_shortest_paths.h>
+#include <PCCD/Geodesic/Paths_on_the_fly.h>
+#include <PCCD/Hierarchy/reach_traversal.h>
+#include <PCCD/Intersection/Posed_object.h>
+#include <PCCD/Intersection/Query_state.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Intersection/do_intersect_many.h>
+#include <PCCD/Point_cloud_object.h>
 #include <PCCD/Proximity_graph/graph_components.h>
 #include <PCCD/Proximity_graph/knn_graph.h>
 #include <PCCD/Proximity_graph/prune_long_edges.h>
 #include <PCCD/Proximity_graph/sphere_of_influence_graph.h>
 #include <PCCD/Surface/Geodesic_distance.h>
-#include <PCCD/Surface/outliers.h>
-#include <PCCD/Surface/surface_domain.h>
-#include <PCCD/sampling_radius.h>
-#include <PCCD/Point_cloud_object.h>
 #include <PCCD/Surface/WLS_surface.h>
 #include <PCCD/Surface/estimate_normals.h>
+#include <PCCD/Surface/orient_normals.h>
+#include <PCCD/Surface/outliers.h>
+#include <PCCD/Surface/surface_domain.h>
 #include <PCCD/concepts/CollisionObject.h>
 #include <PCCD/concepts/LeafIntersector.h>
 #include <PCCD/concepts/PairObserver.h>
 #include <PCCD/concepts/PathSource.h>
-#include <PCCD/Hierarchy/reach_traversal.h>
 #include <PCCD/concepts/ProximityGraph.h>
-#include <PCCD/Geodesic/Close_pairs_shortest_paths.h>
-#include <PCCD/Geodesic/Paths_on_the_fly.h>
-#include <PCCD/Surface/orient_normals.h>
 #include <PCCD/concepts/SurfaceDistance.h>
 #include <PCCD/concepts/SurfaceWeight.h>
+#include <PCCD/sampling_radius.h>
 
 #include <catch2/catch.hpp>
 

@@ -1,11 +1,13 @@
 // Compile-time checks that every shipped model satisfies its concept and that unrelated types are
 // rejected; plus a user-defined point type going through a point map.
+// Also covers Point_traits.h: the test cases below exercise what it declares.
 #include <PCCD/Eigen_kernel.h>
 #include <PCCD/Identity_point_map.h>
+#include <PCCD/Intersection/Intersection_visitor.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud.h>
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Intersection/Intersection_visitor.h>
+#include <PCCD/Point_traits.h>
 #include <PCCD/concepts/PairObserver.h>
 #include <PCCD/concepts/PointCloudKernel.h>
 #include <PCCD/concepts/ProximityGraph.h>
