@@ -58,6 +58,24 @@ inline bool probe(const Point_cloud_hierarchy& s, const Point_cloud_hierarchy& t
     }
 }
 
+/// Takes the region point k of s (hierarchy order) in `role`, unless the role has considered it
+/// already or a sample it took covers it (a covered point is remembered in role.skipped, when
+/// set). Returns false when the query must stop.
+template <class Role_type>
+bool consider_point(const Point_cloud_hierarchy& s, Point_cloud_hierarchy::Index k, Position_set& done,
+                    Covering_grid& cover, Role_type& role)
+{
+    if (!done.insert(k)) return true;
+    ++role.state.counters.candidate_points;
+    const Eigen::Vector3d local = s.ordered_points().col(k).head<3>();
+    if (cover.covers(local)) {
+        if (role.skipped) role.skipped->push_back(k);
+        return true;
+    }
+    cover.add(local);
+    return role.sample(s.order()[k]) && !role.state.stop();
+}
+
 /// Samples, in `role`, the points of leaf `ls` of s within the reach of leaf `lt` of t that the
 /// role has not sampled yet, up to `cap` samples. Returns false when the query must stop.
 template <class Role_type>
@@ -77,15 +95,7 @@ bool sample_leaf(const Point_cloud_hierarchy& s, Point_cloud_hierarchy::Index ls
             const double reach = rule_t(pt(3, m));
             inside = (pt.col(m).head<3>() - q).squaredNorm() <= reach * reach;
         }
-        if (!inside || !done.insert(k)) continue;
-        ++role.state.counters.candidate_points;
-        const Eigen::Vector3d local = ps.col(k).head<3>();
-        if (cover.covers(local)) {
-            if (role.skipped) role.skipped->push_back(k);
-            continue;
-        }
-        cover.add(local);
-        if (!role.sample(s.order()[k]) || role.state.stop()) return false;
+        if (inside && !consider_point(s, k, done, cover, role)) return false;
     }
     return true;
 }
@@ -101,15 +111,7 @@ bool sample_marked(const Point_cloud_hierarchy& s, Point_cloud_hierarchy::Index 
     for (; inside != 0; inside &= inside - 1) {
         if (role.taken >= cap) return true;
         const auto k = ns.first + Point_cloud_hierarchy::Index(std::countr_zero(inside));
-        if (!done.insert(k)) continue;
-        ++role.state.counters.candidate_points;
-        const Eigen::Vector3d local = s.ordered_points().col(k).head<3>();
-        if (cover.covers(local)) {
-            if (role.skipped) role.skipped->push_back(k);
-            continue;
-        }
-        cover.add(local);
-        if (!role.sample(s.order()[k]) || role.state.stop()) return false;
+        if (!consider_point(s, k, done, cover, role)) return false;
     }
     return true;
 }
