@@ -19,7 +19,7 @@ struct Points_in_ball {
     const PCCD::Point_cloud_hierarchy& tree;
     Eigen::Vector3d q;
     double radius;
-    std::vector<std::size_t> found;
+    std::vector<std::size_t> found{};
 
     bool go_further() const { return true; }
     bool enter(Index i) const { return tree.node(i).box.squaredExteriorDistance(q) <= radius * radius; }

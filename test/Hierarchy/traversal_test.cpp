@@ -64,7 +64,7 @@ struct Record_all {
     bool left_first_order = true;
     std::uint32_t skip = 0xffffffffu; // a node whose subtree is pruned
     std::size_t stop_after = 0;       // stop after this many leaves (0: never)
-    std::vector<std::uint32_t> entered, leaves;
+    std::vector<std::uint32_t> entered{}, leaves{};
     bool go_further() const { return stop_after == 0 || leaves.size() < stop_after; }
     bool enter(std::uint32_t n)
     {
@@ -142,7 +142,7 @@ struct Record_pairs {
     const Test_tree& a;
     const Test_tree& b;
     PCCD::Pair_split inner_rule; // what to do with two inner nodes
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs{};
     bool go_further() const { return true; }
     bool enter(std::uint32_t, std::uint32_t) const { return true; }
     PCCD::Pair_split split(std::uint32_t i, std::uint32_t j) const
