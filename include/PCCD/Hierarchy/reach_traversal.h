@@ -48,7 +48,7 @@ struct Reach_pair_traits {
     Observer& observer;
     bool closest_first;
     bool either;
-    const Eigen::Matrix3d& r;
+    const Eigen::Matrix3d r; // copies: read at every node pair
     const Eigen::Matrix3d abs_r;
     const Pair_tests tests;
     /// The nodes of s mapped lately (each appears in several pairs), by node index modulo 64 (left

@@ -8,6 +8,7 @@
 // queries are traits of these two functions.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <type_traits>
 #include <cstdint>
@@ -21,35 +22,42 @@ namespace PCCD {
 namespace internal {
 
 /// A LIFO stack that keeps its first N items in place (no allocation for the balanced trees of
-/// PCCD: a depth-first walk holds at most a few pending siblings per level) and spills to the heap
-/// beyond them (a degenerate tree of any depth).
-template <class T, int N>
+/// PCCD: a depth-first walk holds at most a few pending siblings per level) and moves to the heap,
+/// doubling, beyond them (a degenerate tree of any depth). pop() is one decrement and one load.
+template <class T, std::size_t N>
 class Walk_stack {
 public:
-    bool empty() const { return m_top == 0 && m_spilled.empty(); }
+    Walk_stack() = default;
+    Walk_stack(const Walk_stack&) = delete;
+    Walk_stack& operator=(const Walk_stack&) = delete;
+
+    bool empty() const { return m_top == 0; }
     /// The number of items held.
-    std::size_t size() const { return std::size_t(m_top) + m_spilled.size(); }
+    std::size_t size() const { return m_top; }
     void push(const T& item)
     {
-        if (m_top < N)
-            m_items[m_top++] = item;
-        else
-            m_spilled.push_back(item);
+        if (m_top == m_capacity) [[unlikely]]
+            grow();
+        m_data[m_top++] = item;
     }
-    T pop()
-    {
-        if (!m_spilled.empty()) {
-            const T item = m_spilled.back();
-            m_spilled.pop_back();
-            return item;
-        }
-        return m_items[--m_top];
-    }
+    T pop() { return m_data[--m_top]; }
 
 private:
+    /// Out of line and cold, so that push() stays small enough to be inlined into the walk.
+    [[gnu::noinline, gnu::cold]] void grow()
+    {
+        const bool in_place = m_data == m_items;
+        m_heap.resize(2 * m_capacity);
+        if (in_place) std::copy(m_items, m_items + m_top, m_heap.begin());
+        m_data = m_heap.data();
+        m_capacity = m_heap.size();
+    }
+
+    std::size_t m_top = 0;
+    std::size_t m_capacity = N;
     T m_items[N];
-    int m_top = 0;
-    std::vector<T> m_spilled;
+    T* m_data = m_items;
+    std::vector<T> m_heap;
 };
 
 } // namespace internal
