@@ -42,5 +42,6 @@ for pose_b in (turn, turn + [[0, 0, 0, 2.5], [0, 0, 0, 0], [0, 0, 0, 0]]):
 curve = pccd.intersection_points(a, None, b, turn, seed=7)
 print(f"{len(curve.points)} points on the intersection curves, e.g. {curve.points[0]}")
 out = pathlib.Path(args.out or tempfile.mkdtemp(prefix="pccd-quickstart-")) / "curve.ply"
+out.parent.mkdir(parents=True, exist_ok=True)
 pccd.write_points(out, curve.points)
 print("wrote", out)

@@ -122,8 +122,10 @@ std::string path_argument(py::handle value, const char* function, const char* na
 {
     if (value.is_none())
         throw py::type_error(std::string(function) + "(): " + name + " must be a str, bytes or os.PathLike, not None");
-    static const py::object fspath = py::module_::import("os").attr("fspath");
-    static const py::object fsdecode = py::module_::import("os").attr("fsdecode");
+    // Looked up once and never released: a static py::object would be released after the
+    // interpreter has finalized.
+    static const py::object& fspath = *new py::object(py::module_::import("os").attr("fspath"));
+    static const py::object& fsdecode = *new py::object(py::module_::import("os").attr("fsdecode"));
     py::object path;
     try {
         path = fspath(value);

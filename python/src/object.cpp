@@ -116,7 +116,7 @@ Object build(py::handle points, py::handle normals, const py::kwargs& kwargs)
     // `normals` when it has some and none are given. Duck-typed, so Open3D is not needed here.
     py::object cloud_points, cloud_normals;
     if (!py::isinstance<py::array>(points) && py::hasattr(points, "points") && py::hasattr(points, "has_normals")) {
-        static const py::object asarray = py::module_::import("numpy").attr("asarray");
+        static const py::object& asarray = *new py::object(py::module_::import("numpy").attr("asarray")); // never released
         const py::object cloud = py::reinterpret_borrow<py::object>(points);
         cloud_points = asarray(cloud.attr("points"));
         points = cloud_points;
