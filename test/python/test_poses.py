@@ -50,11 +50,11 @@ def test_a_4x4_last_row_within_the_tolerance_is_accepted(shapes):
     sphere, torus = shapes
     p = np.vstack([pose((0, 0, 1), 0.3, (3, 0, 0)), [0.0, 0.0, 0.0, 1.0 + 1e-12]])
     assert pccd.do_intersect(sphere, None, torus, p).status == "separate"
-    p[3, 3] = 1.001
-    with pytest.raises(ValueError, match=r"last row .*\[0, 0, 0, 1.0009999999999999\]"):
+    p[3, 3] = 1.00001234567  # 6 digits would print 1.000012
+    with pytest.raises(ValueError, match=r"last row .*within 1e-05.*got \[0, 0, 0, 1.00001234567\]"):
         pccd.do_intersect(sphere, None, torus, p)
     p[3] = [1e-4, 0.0, 0.0, 1.0]
-    with pytest.raises(ValueError, match=r"got \[0.0001, 0, 0, 1\]"):
+    with pytest.raises(ValueError, match=r"got \[1e-04, 0, 0, 1\]"):
         pccd.do_intersect(sphere, None, torus, p)
 
 

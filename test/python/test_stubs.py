@@ -10,7 +10,8 @@ import pccd._pccd as compiled
 
 
 def public(names):
-    return {n for n in names if not n.startswith("_")} | ({"__version__"} & set(names))
+    names = set(names)
+    return {n for n in names if not n.startswith("_")} | ({"__version__"} & names)
 
 
 def stub_tree():
