@@ -1,4 +1,4 @@
-// pccd collide A B [--transform-a 12 numbers] [--transform-b 12 numbers] [--normalize]
+// pccd collide A B [--transform-a 12 numbers] [--transform-b 12 numbers] [--orthonormalize] [--normalize]
 //   [--method isearch|rst] [--mode first|all] [--seed S] [--out points.ply] [--json] [--cases FILE]:
 // whether two point clouds, each posed by a rigid transform, intersect (do_intersect, --mode first)
 // or where (intersection_points, --mode all), with the query's counters and wall time
