@@ -10,7 +10,7 @@
    pairs on a dask.distributed LocalCluster of 2 worker processes (examples/python/
    dask_many_pairs.py), for random poses of two bunnies scaled into [-1, 1]^3 at distances 0 ... 2.
 
-    PYTHONPATH=build/python python3 benchmark/python_overhead.py --pccd build/tools/pccd \
+    build/pccd-python benchmark/python_overhead.py --pccd build/tools/pccd \
         --bunny build/cgal-data/data/meshes/bunny00.off
 
 Prints a Markdown table of medians (and the load average, since other jobs may share the cores).

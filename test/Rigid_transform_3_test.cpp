@@ -10,7 +10,9 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <string>
 
 #include <Eigen/Geometry>
 
@@ -131,3 +133,100 @@ TEST_CASE("Rigid_transform_3 from CGAL::Aff_transformation_3 (inexact and exact 
     CHECK(b.transform_point(Vector3d(1, 0, 0)) == Vector3d(5, 1, 0));
 }
 
+
+namespace {
+
+/// `r` with every entry rounded to `decimals` decimals, as a program printing it with %.6f would.
+Eigen::Matrix3d rounded(const Eigen::Matrix3d& r, int decimals)
+{
+    const double scale = std::pow(10.0, decimals);
+    return r.unaryExpr([scale](double v) { return std::round(v * scale) / scale; });
+}
+
+std::array<double, 12> rows_of(const Eigen::Matrix3d& r, const Vector3d& t)
+{
+    std::array<double, 12> rows{};
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) rows[std::size_t(4 * i + j)] = r(i, j);
+        rows[std::size_t(4 * i + 3)] = t(i);
+    }
+    return rows;
+}
+
+} // namespace
+
+TEST_CASE("Rigid_transform_3: a rotation printed with 6 decimals is accepted", "[sampling][transform]")
+{
+    // The default tolerance (1e-5 on R^T R - I) admits every rotation rounded to 6 decimals: 200
+    // random rotations (about 40 of which the former 1e-6 refused) and the worst case of the bound.
+    std::uint64_t state = 12345;
+    const auto uniform = [&] {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        return double(state >> 11) * 0x1.0p-53;
+    };
+    int refused_before = 0;
+    for (int k = 0; k < 200; ++k) {
+        const Eigen::Quaterniond q(Eigen::Vector4d(uniform() - 0.5, uniform() - 0.5, uniform() - 0.5, uniform() - 0.5).normalized());
+        const Eigen::Matrix3d six = rounded(q.toRotationMatrix(), 6);
+        CHECK_NOTHROW(PCCD::Rigid_transform_3<>(six, Vector3d::Zero()));
+        if ((six.transpose() * six - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() > 1e-6) ++refused_before;
+    }
+    CHECK(refused_before > 0); // the case the former tolerance got wrong does occur in this sample
+    CHECK(PCCD::Rigid_transform_3<>::default_tolerance == 1e-5);
+    // Rounded to 4 decimals, a rotation is off by up to about 2e-4: refused, with the values in full.
+    const Eigen::Matrix3d four = rounded(some_rotation(), 4);
+    const double off = (four.transpose() * four - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+    if (off > 1e-5) CHECK_THROWS_AS(PCCD::Rigid_transform_3<>(four, Vector3d::Zero()), PCCD::Invalid_input);
+}
+
+TEST_CASE("Rigid_transform_3: error messages print the values in full", "[sampling][transform][errors]")
+{
+    Eigen::Matrix3d r = Eigen::Matrix3d::Identity();
+    r(1, 1) = 1.0000123456789; // its square is off by 2.469e-5; 6 digits would print "length 1.00001"
+    try {
+        PCCD::Rigid_transform_3<> t(r, Vector3d::Zero());
+        FAIL("accepted");
+    } catch (const PCCD::Invalid_input& e) {
+        const std::string message = e.what();
+        CHECK_THAT(message, Catch::Contains("column 1 has length 1.0000123456789,"));
+        CHECK_THAT(message, Catch::Contains("off by 2.46915"));
+        CHECK_THAT(message, Catch::Contains("tolerance 1e-05"));
+        CHECK_THAT(message, !Catch::Contains("has length 1, not 1"));
+    }
+    CHECK(PCCD::Rigid_transform_3<>::full_digits(1.0 + 1e-12) == "1.000000000001");
+    CHECK(PCCD::Rigid_transform_3<>::full_digits(0.1) == "0.1");
+}
+
+TEST_CASE("orthonormalize: the nearest rotation, and how far it moved", "[sampling][transform]")
+{
+    const Eigen::Matrix3d r = some_rotation();
+    const Vector3d t(1, 2, 3);
+    // A rotation rounded to 3 decimals: refused by the constructor, repaired on request.
+    const Eigen::Matrix3d three = rounded(r, 3);
+    CHECK_THROWS_AS(PCCD::Rigid_transform_3<>(three, t), PCCD::Invalid_input);
+    const auto fixed = PCCD::orthonormalize(rows_of(three, t));
+    const Eigen::Matrix3d q = fixed.transform.rotation();
+    CHECK((q.transpose() * q - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() < 2e-15);
+    CHECK(std::abs(q.determinant() - 1.0) < 2e-15);
+    CHECK(fixed.transform.translation() == t);
+    CHECK(fixed.moved == Approx((q - three).cwiseAbs().maxCoeff()));
+    CHECK(fixed.moved > 0.0);
+    CHECK(fixed.moved < 1e-3);
+    CHECK((q - r).cwiseAbs().maxCoeff() < 1e-3);
+    // The nearest rotation: no other rotation nearby is closer in the Frobenius norm.
+    for (int axis = 0; axis < 3; ++axis)
+        for (const double angle : {-1e-4, 1e-4}) {
+            const Eigen::Matrix3d other = q * Eigen::AngleAxisd(angle, Vector3d::Unit(axis)).toRotationMatrix();
+            CHECK((other - three).norm() > (q - three).norm());
+        }
+    // An exact rotation does not move (beyond rounding).
+    CHECK(PCCD::orthonormalize(rows_of(r, t)).moved < 1e-15);
+    // Reflections, singular matrices and NaN are refused.
+    CHECK_THROWS_WITH(PCCD::orthonormalize(rows_of(-r, t)), Catch::Contains("reflection"));
+    Eigen::Matrix3d flat = r;
+    flat.col(2).setZero();
+    CHECK_THROWS_WITH(PCCD::orthonormalize(rows_of(flat, t)), Catch::Contains("singular"));
+    Eigen::Matrix3d with_nan = r;
+    with_nan(0, 0) = std::numeric_limits<double>::quiet_NaN();
+    CHECK_THROWS_WITH(PCCD::orthonormalize(rows_of(with_nan, t)), Catch::Contains("rotation entry (0, 0) is nan"));
+}

@@ -1,4 +1,4 @@
-// pccd collide A B [--transform-a 12 numbers] [--transform-b 12 numbers] [--normalize]
+// pccd collide A B [--transform-a 12 numbers] [--transform-b 12 numbers] [--orthonormalize] [--normalize]
 //   [--method isearch|rst] [--mode first|all] [--seed S] [--out points.ply] [--json] [--cases FILE]:
 // whether two point clouds, each posed by a rigid transform, intersect (do_intersect, --mode first)
 // or where (intersection_points, --mode all), with the query's counters and wall time
@@ -37,6 +37,7 @@ struct Collide_options {
     std::vector<std::string> transform_a;
     std::vector<std::string> transform_b;
     bool normalize = false;
+    bool orthonormalize = false;
     std::string method = "isearch";
     std::string mode = "first";
     std::uint64_t seed = PCCD::Intersection_options{}.seed;
@@ -138,8 +139,8 @@ void run_collide(const Collide_options& o)
     if (!o.cases.empty())
         cases = read_cases(o.cases);
     else {
-        pose_a = option_transform(o.transform_a, "--transform-a");
-        pose_b = option_transform(o.transform_b, "--transform-b");
+        pose_a = option_transform(o.transform_a, "--transform-a", o.orthonormalize);
+        pose_b = option_transform(o.transform_b, "--transform-b", o.orthonormalize);
     }
     const bool same = same_file(o.file_a, o.file_b);
     const Object_points points_a = read_object_points(o.file_a, o.normalize);
@@ -228,6 +229,9 @@ void register_collide(CLI::App& app)
                                "Pose of A: 12 numbers, the 3x4 matrix [R | t] row by row (default: identity)")
                    ->expected(1, 12);
     auto* tb = cmd->add_option("--transform-b", o->transform_b, "Pose of B, as --transform-a")->expected(1, 12);
+    cmd->add_flag("--orthonormalize", o->orthonormalize,
+                  "Use the nearest rotation of each --transform's 3x3 part (polar factor) instead of refusing one "
+                  "that is off by more than 1e-5 on R^T R - I; prints how far it moved");
     cmd->add_flag("--normalize", o->normalize,
                   "Centre and scale each object into [-1,1]^3 (bounding box) before preprocessing");
     cmd->add_option("--method", o->method, "Leaf intersector: isearch (interpolation search, default) or rst")

@@ -144,7 +144,7 @@ void print_text(const nlohmann::json& info)
                   << " points left out\n"
                   << "hierarchy     " << info["hierarchy"].dump() << '\n';
     for (const auto& [name, ms] : info["timings_ms"].items())
-        std::cout << "time " << std::left << std::setw(9) << name << ms.get<double>() << " ms\n";
+        std::cout << std::left << std::setw(20) << ("time " + name) << ' ' << ms.get<double>() << " ms\n";
 }
 
 } // namespace

@@ -142,31 +142,30 @@ inline Timed_result run_timed_query(const PCCD::Point_cloud_object<>& a, const P
     throw PCCD::Invalid_input("unknown method \"" + method + "\" (expected isearch or rst)");
 }
 
-/// The names of the counters, in the order of counter_values().
+/// The names of the counters, in the order of PCCD::for_each_counter (the library's one list).
 inline const std::vector<std::string>& counter_names()
 {
-    static const std::vector<std::string> names{
-        "f_evaluations",    "brackets_tried", "partner_candidates", "brackets_found",
-        "search_steps",     "bisection_steps", "samples",           "candidate_points",
-        "refinement_samples", "node_pairs",   "leaf_pairs",        "candidates_rejected",
-        "pending_node_pairs", "certification_passes", "unverified_crossings"};
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> out;
+        PCCD::for_each_counter(PCCD::Intersection_counters{}, [&](const char* name, std::size_t) { out.emplace_back(name); });
+        return out;
+    }();
     return names;
 }
 
+/// The counters' values, in the order of counter_names().
 inline std::vector<std::size_t> counter_values(const PCCD::Intersection_counters& c)
 {
-    return {c.f_evaluations, c.brackets_tried,   c.partner_candidates, c.brackets_found,
-            c.search_steps,  c.bisection_steps,  c.samples,            c.candidate_points,
-            c.refinement_samples, c.node_pairs, c.leaf_pairs, c.candidates_rejected, c.pending_node_pairs,
-            c.certification_passes, c.unverified_crossings};
+    std::vector<std::size_t> values;
+    PCCD::for_each_counter(c, [&](const char*, std::size_t value) { values.push_back(value); });
+    return values;
 }
 
 /// Adds every counter to `out` under its name.
 template <class Json>
 void add_counters(Json& out, const PCCD::Intersection_counters& counters)
 {
-    const std::vector<std::size_t> values = counter_values(counters);
-    for (std::size_t i = 0; i < values.size(); ++i) out[counter_names()[i]] = values[i];
+    PCCD::for_each_counter(counters, [&](const char* name, std::size_t value) { out[name] = value; });
 }
 
 } // namespace pccd_tool

@@ -9,6 +9,7 @@
 #include <array>
 #include <cerrno>
 #include <cstdlib>
+#include <iostream>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -40,9 +41,12 @@ inline std::vector<std::string> split_fields(const std::string& text)
 }
 
 /// The rigid transform given by 12 numbers (3x4 row-major, rotation | translation); `what` names
-/// the source in error messages. Rigid_transform_3 rejects non-rigid matrices.
+/// the source in error messages. Rigid_transform_3 rejects non-rigid matrices (its one tolerance
+/// rule, shared with the library and the Python module); with `orthonormalize` the rotation is
+/// replaced by its nearest rotation instead (PCCD::orthonormalize), and how far that moved it is
+/// printed to stderr.
 inline PCCD::Rigid_transform_3<double> make_transform(const std::vector<std::string>& fields, std::size_t first,
-                                               const std::string& what)
+                                               const std::string& what, bool orthonormalize = false)
 {
     std::array<double, 12> m{};
     for (std::size_t i = 0; i < 12; ++i) {
@@ -53,6 +57,12 @@ inline PCCD::Rigid_transform_3<double> make_transform(const std::vector<std::str
         m[i] = *value;
     }
     try {
+        if (orthonormalize) {
+            const PCCD::Orthonormalized_transform<double> fixed = PCCD::orthonormalize(m);
+            std::cerr << "pccd: " << what << ": orthonormalized, the rotation moved by "
+                      << PCCD::Rigid_transform_3<double>::full_digits(fixed.moved) << " (largest entry change)\n";
+            return fixed.transform;
+        }
         return PCCD::Rigid_transform_3<double>(m);
     } catch (const PCCD::Invalid_input& e) {
         throw PCCD::Invalid_input(what + ": " + e.what());
@@ -61,7 +71,8 @@ inline PCCD::Rigid_transform_3<double> make_transform(const std::vector<std::str
 
 /// The transform of --transform-a / --transform-b: identity when absent, else 12 numbers given as
 /// separate arguments or in one quoted string.
-inline PCCD::Rigid_transform_3<double> option_transform(const std::vector<std::string>& arguments, const std::string& option)
+inline PCCD::Rigid_transform_3<double> option_transform(const std::vector<std::string>& arguments, const std::string& option,
+                                                        bool orthonormalize = false)
 {
     if (arguments.empty()) return {};
     std::string joined;
@@ -70,7 +81,12 @@ inline PCCD::Rigid_transform_3<double> option_transform(const std::vector<std::s
     if (fields.size() != 12)
         throw PCCD::Invalid_input(option + " expects 12 numbers (3x4 row-major: r00 r01 r02 t0 r10 ... t2), got " +
                                   std::to_string(fields.size()));
-    return make_transform(fields, 0, option);
+    try {
+        return make_transform(fields, 0, option, orthonormalize);
+    } catch (const PCCD::Invalid_input& e) {
+        if (orthonormalize || std::string(e.what()).find("is not a number") != std::string::npos) throw;
+        throw PCCD::Invalid_input(std::string(e.what()) + " (--orthonormalize uses the nearest rotation instead)");
+    }
 }
 
 } // namespace pccd_tool

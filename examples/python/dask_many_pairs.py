@@ -7,7 +7,7 @@ each chunk is one task that answers its pairs with pccd.do_intersect_many (first
 chunk's start, so pair i is seeded as pair i of the whole batch), and the results are gathered in
 input order. They equal, bit for bit, one pccd.do_intersect_many call over all the pairs.
 
-    PYTHONPATH=build/python python3 examples/python/dask_many_pairs.py --pairs 2000
+    build/pccd-python examples/python/dask_many_pairs.py --pairs 2000
 starts a LocalCluster of 2 worker processes on this machine (127.0.0.1). On a real cluster, start
 `dask scheduler` on one machine and `dask worker tcp://SCHEDULER:8786 --nthreads 1` on each of the
 others (each with numpy, dask.distributed and pccd importable), then pass
@@ -129,8 +129,10 @@ def run_on_cluster(client, blobs, pairs, seed=24301, chunk=50, mode="first"):
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--pairs", type=int, default=1000, help="number of object pairs (default 1000)")
-    parser.add_argument("--chunk", type=int, default=50, help="pairs per task (default 50)")
+    parser.add_argument("--pairs", type=int, default=4000, help="number of object pairs (default 4000)")
+    parser.add_argument("--chunk", type=int, default=1000,
+                        help="pairs per task (default 1000: at least a tenth of a second of queries per task, "
+                             "as doc/manual/python.md advises)")
     parser.add_argument("--mode", choices=("first", "all"), default="first",
                         help="first: do_intersect (default); all: intersection_points")
     parser.add_argument("--seed", type=int, default=24301, help="seed of the batch (default 24301)")

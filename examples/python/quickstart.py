@@ -1,20 +1,25 @@
 """Two scans, one collision query, one intersection curve: the Python quickstart of PCCD.
 
-Run from the source tree after building (PYTHONPATH=build/python) or after `cmake --install`:
-    python3 examples/python/quickstart.py [SCAN_A SCAN_B]
-Without arguments it takes libcgal-demo's bunny and elephant from build/cgal-data (or
-$PCCD_DATA_DIR), each scaled into [-1, 1]^3.
+Run from the source tree after building, with the interpreter the module was built for:
+    build/pccd-python examples/python/quickstart.py [--out DIR] [SCAN_A SCAN_B]
+(or python3 after `pip install`). Without scans it takes libcgal-demo's bunny and elephant from
+$PCCD_DATA_DIR or build/cgal-data, each scaled into [-1, 1]^3. The curve goes to DIR/curve.ply,
+by default into a new temporary directory.
 """
+import argparse
 import os
 import pathlib
-import sys
+import tempfile
 
 import numpy as np
 
 import pccd
 
 meshes = pathlib.Path(os.environ.get("PCCD_DATA_DIR") or pathlib.Path(__file__).resolve().parents[2] / "build/cgal-data/data/meshes")
-files = sys.argv[1:3] or [meshes / "bunny00.off", meshes / "elephant.off"]
+parser = argparse.ArgumentParser(description="Collide two scans with pccd and save their intersection curve.")
+parser.add_argument("scans", nargs="*", default=[meshes / "bunny00.off", meshes / "elephant.off"])
+parser.add_argument("--out", help="directory of curve.ply (default: a new temporary directory)")
+args = parser.parse_args()
 
 
 def unit_cube(points):
@@ -23,8 +28,8 @@ def unit_cube(points):
     return (points - (low + high) / 2) / ((high - low).max() / 2)
 
 
-a = pccd.Object(unit_cube(pccd.read_points(files[0])[0]))  # preprocessed once
-b = pccd.Object(unit_cube(pccd.read_points(files[1])[0]))
+a = pccd.Object(unit_cube(pccd.read_points(args.scans[0])[0]))  # preprocessed once
+b = pccd.Object(unit_cube(pccd.read_points(args.scans[1])[0]))
 print(f"A: {a.size} points, B: {b.size} points, sampling radii {a.sampling_radius:.4f}, {b.sampling_radius:.4f}")
 
 turn = np.array([[0.0, -1.0, 0.0, 0.5],  # B turned 90 degrees about z and moved 0.5 along x
@@ -36,5 +41,7 @@ for pose_b in (turn, turn + [[0, 0, 0, 2.5], [0, 0, 0, 0], [0, 0, 0, 0]]):
 
 curve = pccd.intersection_points(a, None, b, turn, seed=7)
 print(f"{len(curve.points)} points on the intersection curves, e.g. {curve.points[0]}")
-pccd.write_points("curve.ply", curve.points)
-print("wrote curve.ply")
+out = pathlib.Path(args.out or tempfile.mkdtemp(prefix="pccd-quickstart-")) / "curve.ply"
+out.parent.mkdir(parents=True, exist_ok=True)
+pccd.write_points(out, curve.points)
+print("wrote", out)

@@ -11,10 +11,12 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <concepts>
 #include <cstddef>
 #include <limits>
+#include <string>
 #include <type_traits>
 
 #include <Eigen/Core>
@@ -56,11 +58,14 @@ FT to_floating_point(const N& value)
 ///
 /// \tparam FT_ `float` or `double`.
 ///
-/// Validation: the rotation part is accepted when every entry of R^T R - I is at most `tolerance`
-/// in absolute value (default `default_tolerance`) and det R > 0; it is then stored as its nearest
-/// rotation matrix (orthogonal polar factor U V^T of the SVD R = U S V^T), which differs from the
-/// input by at most about `tolerance`. Otherwise the constructor throws Invalid_input saying whether
-/// the matrix scales, shears or reflects, or which entry is NaN or infinite.
+/// Validation (the one rule of the library, the `pccd` tool and the Python module): the rotation
+/// part is accepted when every entry of R^T R - I is at most `tolerance` in absolute value (default
+/// `default_tolerance`, 1e-5 for double) and det R > 0; it is then stored as its nearest rotation
+/// matrix (orthogonal polar factor U V^T of the SVD R = U S V^T), which differs from the input by at
+/// most about `tolerance`. Otherwise the constructor throws Invalid_input saying whether the matrix
+/// scales, shears or reflects, or which entry is NaN or infinite, with the offending values in full
+/// (shortest round-trip digits). A matrix further from a rotation can be repaired on purpose with
+/// orthonormalize(), which says how far it moved it.
 ///
 /// Immutable value type; all member functions are const and safe to call concurrently.
 template <std::floating_point FT_ = double>
@@ -72,9 +77,11 @@ public:
     using Matrix_3x4 = Eigen::Matrix<FT, 3, 4>;
     using Coordinates = Eigen::Matrix<FT, 3, Eigen::Dynamic>;
 
-    /// Default tolerance on the entries of R^T R - I: 1e-6 for double (a rotation written with
-    /// 7 significant digits passes), 100 machine epsilons (about 1.2e-5) for float.
-    static constexpr FT default_tolerance = std::max(FT(1e-6), FT(100) * std::numeric_limits<FT>::epsilon());
+    /// Default tolerance on the entries of R^T R - I: 1e-5 for double, so that a rotation printed
+    /// with 6 decimals always passes (rounding each entry by at most 5e-7 changes an entry of R^T R
+    /// by at most 2 sqrt(3) 5e-7 + 3 (5e-7)^2 < 1.8e-6), while one printed with 4 decimals may not;
+    /// 100 machine epsilons (about 1.2e-5) for float.
+    static constexpr FT default_tolerance = std::max(FT(1e-5), FT(100) * std::numeric_limits<FT>::epsilon());
 
     /// \name Construction
     /// @{
@@ -200,6 +207,15 @@ public:
     }
     /// @}
 
+    /// `value` with as many digits as it takes to read it back exactly (shortest round trip), for
+    /// error messages: 1.0000000000010001, not 1.
+    static std::string full_digits(FT value)
+    {
+        char text[64];
+        const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+        return std::string(text, end);
+    }
+
 private:
     struct Unchecked {};
     Rigid_transform_3(const Matrix_3& rotation, const Vector_3& translation, Unchecked)
@@ -211,12 +227,13 @@ private:
     void set_checked(const Eigen::MatrixBase<Derived>& m, FT tolerance)
     {
         if (!(std::isgreaterequal(tolerance, FT(0)) && std::isless(tolerance, FT(0.5))))
-            throw Invalid_input(internal::concat("rigid transform: tolerance ", tolerance, " is not in [0, 0.5)"));
+            throw Invalid_input(internal::concat("rigid transform: tolerance ", full_digits(tolerance),
+                                                 " is not in [0, 0.5)"));
         for (int i = 0; i < 3; ++i)
             for (int j = 0; j < 4; ++j)
                 if (!std::isfinite(m(i, j)))
                     throw Invalid_input(internal::concat("rigid transform: ", j < 3 ? "rotation" : "translation",
-                                                         " entry (", i, ", ", j, ") is ", m(i, j)));
+                                                         " entry (", i, ", ", j, ") is ", full_digits(m(i, j))));
         // Within a tolerance below 0.5 every column of a rotation has squared length below 1.5, so no
         // entry exceeds 2 in absolute value; rejecting larger entries here also keeps R^T R below
         // from overflowing (a trap in builds with floating-point exceptions enabled).
@@ -224,24 +241,25 @@ private:
             for (int j = 0; j < 3; ++j)
                 if (std::abs(m(i, j)) > FT(2))
                     throw Invalid_input(internal::concat("rigid transform: the rotation part scales: entry (", i, ", ",
-                                                         j, ") is ", m(i, j), ", beyond any rotation's"));
+                                                         j, ") is ", full_digits(m(i, j)), ", beyond any rotation's"));
         const Matrix_3 r = m.template leftCols<3>();
         const Matrix_3 gram = r.transpose() * r;
         for (int i = 0; i < 3; ++i)
             for (int j = i + 1; j < 3; ++j)
                 if (std::abs(gram(i, j)) > tolerance)
                     throw Invalid_input(internal::concat("rigid transform: the rotation part shears: columns ", i,
-                                                         " and ", j, " have dot product ", gram(i, j),
-                                                         " (tolerance ", tolerance, ")"));
+                                                         " and ", j, " have dot product ", full_digits(gram(i, j)),
+                                                         " (tolerance ", full_digits(tolerance), ")"));
         for (int i = 0; i < 3; ++i)
             if (std::abs(gram(i, i) - FT(1)) > tolerance)
                 throw Invalid_input(internal::concat("rigid transform: the rotation part scales: column ", i,
-                                                     " has length ", std::sqrt(gram(i, i)), ", not 1 (tolerance ",
-                                                     tolerance, " on its square)"));
+                                                     " has length ", full_digits(std::sqrt(gram(i, i))),
+                                                     ", not 1 (its square is off by ", full_digits(gram(i, i) - FT(1)),
+                                                     ", tolerance ", full_digits(tolerance), ")"));
         const FT det = r.determinant();
         if (det < FT(0))
             throw Invalid_input(internal::concat("rigid transform: the rotation part is a reflection (determinant ",
-                                                 det, ")"));
+                                                 full_digits(det), ")"));
         // Polar factor from the SVD, then one Newton-Schulz step Q <- Q (3 I - Q^T Q) / 2, which brings
         // the SVD's orthogonality error (a few 1e-15 for double) down to rounding level.
         const Eigen::JacobiSVD<Matrix_3> svd(r, Eigen::ComputeFullU | Eigen::ComputeFullV);
@@ -253,5 +271,51 @@ private:
     Matrix_3 m_rotation;
     Vector_3 m_translation;
 };
+
+/// What orthonormalize() returns: the rigid transform and how far its rotation moved from the
+/// matrix given (the largest absolute change of an entry).
+template <std::floating_point FT>
+struct Orthonormalized_transform {
+    Rigid_transform_3<FT> transform;
+    FT moved = 0;
+};
+
+/// Opt-in repair of a pose whose rotation part is not quite a rotation (rounded when printed,
+/// drifted by long products): the rigid transform with the same translation whose rotation is the
+/// nearest rotation matrix to the 3 x 3 part of `row_major_3x4` in the Frobenius norm (its
+/// orthogonal polar factor, from the SVD), however far that is, and the largest change of an entry
+/// it took. The constructors refuse matrices beyond their tolerance instead; compare `moved` with
+/// what the source's rounding explains before trusting the result.
+/// 	hrows Invalid_input if an entry is NaN or infinite, or if the 3 x 3 part is singular or has a
+///         negative determinant (no nearest proper rotation then: a reflection is not repaired).
+template <std::floating_point FT>
+Orthonormalized_transform<FT> orthonormalize(const std::array<FT, 12>& row_major_3x4)
+{
+    using Matrix_3 = Eigen::Matrix<FT, 3, 3>;
+    const Eigen::Map<const Eigen::Matrix<FT, 3, 4, Eigen::RowMajor>> m(row_major_3x4.data());
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 4; ++j)
+            if (!std::isfinite(m(i, j)))
+                throw Invalid_input(internal::concat("orthonormalize: ", j < 3 ? "rotation" : "translation", " entry (",
+                                                     i, ", ", j, ") is ", Rigid_transform_3<FT>::full_digits(m(i, j))));
+    const Matrix_3 r = m.template leftCols<3>();
+    const Eigen::JacobiSVD<Matrix_3> svd(r, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    const FT largest = svd.singularValues()(0);
+    const FT smallest = svd.singularValues()(2);
+    if (!(smallest > largest * FT(16) * std::numeric_limits<FT>::epsilon()))
+        throw Invalid_input(internal::concat("orthonormalize: the rotation part is singular (singular values ",
+                                             Rigid_transform_3<FT>::full_digits(largest), " to ",
+                                             Rigid_transform_3<FT>::full_digits(smallest), "): no nearest rotation"));
+    const FT det = r.determinant();
+    if (det < FT(0))
+        throw Invalid_input(internal::concat("orthonormalize: the rotation part is a reflection (determinant ",
+                                             Rigid_transform_3<FT>::full_digits(det), "): no nearest proper rotation"));
+    Matrix_3 polar = svd.matrixU() * svd.matrixV().transpose();
+    polar = FT(1.5) * polar - FT(0.5) * polar * (polar.transpose() * polar);
+    std::array<FT, 12> entries = row_major_3x4;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) entries[std::size_t(4 * i + j)] = polar(i, j);
+    return {Rigid_transform_3<FT>(entries), (polar - r).cwiseAbs().maxCoeff()};
+}
 
 } // namespace PCCD

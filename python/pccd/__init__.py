@@ -6,8 +6,9 @@ Python interface of PCCD, a C++20 library that answers whether two point clouds 
 where, without reconstructing a mesh. Each cloud defines a smooth implicit surface (weighted
 least squares over geodesic neighbourhoods); two posed surfaces are intersected stochastically.
 
-Each cloud is preprocessed once into an `Object`; queries then pose objects by rigid transforms
-(3x4 ``[R | t]`` or 4x4 homogeneous numpy arrays) and answer in microseconds to milliseconds.
+Each cloud is preprocessed once into an `Object` (from an (N, 3) array or an Open3D point cloud);
+queries then pose objects by rigid transforms (3x4 ``[R | t]`` or 4x4 homogeneous numpy arrays)
+and answer in microseconds to milliseconds.
 
 Functions and classes
 ---------------------
@@ -23,7 +24,11 @@ do_intersect_many, intersection_points_many
     Many pairs in one call, on several threads (the GIL is released); bit for bit the
     single queries seeded by `pair_seed`.
 Result
-    The answer: ``intersects``, ``status``, ``points`` (an (M, 3) array), ``counters``.
+    The answer: ``intersects``, ``status``, ``points`` (an (M, 3) array), ``counters``,
+    ``query_us``.
+orthonormalize
+    The nearest rigid pose to a matrix whose rotation part is not quite one, and how far it
+    moved (queries refuse R with R^T R - I beyond 1e-5; 6 printed decimals always pass).
 
 Errors
 ------
@@ -50,6 +55,7 @@ from ._pccd import (
     do_intersect_many,
     intersection_points,
     intersection_points_many,
+    orthonormalize,
     pair_seed,
     read_points,
     write_points,
@@ -63,6 +69,7 @@ __all__ = [
     "do_intersect_many",
     "intersection_points",
     "intersection_points_many",
+    "orthonormalize",
     "pair_seed",
     "read_points",
     "write_points",

@@ -7,6 +7,7 @@
 #include <PCCD/Error.h>
 
 #include <array>
+#include <cmath>
 #include <string>
 
 namespace pccd_python {
@@ -45,9 +46,12 @@ Row_array row_array(py::handle value, const char* name)
     return rows;
 }
 
-PCCD::Rigid_transform_3<double> pose_argument(py::handle value, const char* name)
+namespace {
+
+/// The 12 entries of [R | t] of a pose argument, row by row (the 4x4 form's last row checked
+/// against 0 0 0 1 within Rigid_transform_3's default tolerance); `rows` is 3 or 4.
+std::array<double, 12> pose_entries(py::handle value, const char* name, py::ssize_t& rows)
 {
-    if (value.is_none()) return {};
     using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
     Array a;
     if (py::isinstance<Array>(value))
@@ -62,17 +66,75 @@ PCCD::Rigid_transform_3<double> pose_argument(py::handle value, const char* name
     if (a.ndim() != 2 || a.shape(1) != 4 || (a.shape(0) != 3 && a.shape(0) != 4))
         throw py::value_error(std::string(name) + " must have shape (3, 4) or (4, 4), got " + shape_text(a));
     const double* m = a.data();
-    if (a.shape(0) == 4 && !(m[12] == 0.0 && m[13] == 0.0 && m[14] == 0.0 && m[15] == 1.0))
-        throw py::value_error(std::string(name) + ": the last row of a 4x4 pose must be [0, 0, 0, 1], got [" +
-                              std::to_string(m[12]) + ", " + std::to_string(m[13]) + ", " + std::to_string(m[14]) +
-                              ", " + std::to_string(m[15]) + "]");
+    rows = a.shape(0);
+    if (rows == 4) {
+        constexpr double tolerance = PCCD::Rigid_transform_3<double>::default_tolerance;
+        const double expected[4] = {0.0, 0.0, 0.0, 1.0};
+        for (int k = 0; k < 4; ++k)
+            if (!(std::abs(m[12 + k] - expected[k]) <= tolerance)) {
+                std::string row;
+                for (int j = 0; j < 4; ++j)
+                    row += (j ? ", " : "") + PCCD::Rigid_transform_3<double>::full_digits(m[12 + j]);
+                throw py::value_error(std::string(name) + ": the last row of a 4x4 pose must be [0, 0, 0, 1] (within " +
+                                      PCCD::Rigid_transform_3<double>::full_digits(tolerance) + "), got [" + row + "]");
+            }
+    }
     std::array<double, 12> entries;
     for (int k = 0; k < 12; ++k) entries[std::size_t(k)] = m[k];
+    return entries;
+}
+
+} // namespace
+
+PCCD::Rigid_transform_3<double> pose_argument(py::handle value, const char* name)
+{
+    if (value.is_none()) return {};
+    py::ssize_t rows = 0;
+    const std::array<double, 12> entries = pose_entries(value, name, rows);
     try {
         return PCCD::Rigid_transform_3<double>(entries);
     } catch (const PCCD::Invalid_input& e) {
-        throw PCCD::Invalid_input(std::string(name) + ": " + e.what());
+        throw PCCD::Invalid_input(std::string(name) + ": " + e.what() +
+                                  " (pccd.orthonormalize(pose) returns the nearest rigid pose and how far it is)");
     }
+}
+
+py::tuple orthonormalize_pose(py::handle value)
+{
+    if (value.is_none()) throw py::type_error("orthonormalize(): pose must be a 3x4 or 4x4 array, not None");
+    py::ssize_t rows = 0;
+    const std::array<double, 12> entries = pose_entries(value, "pose", rows);
+    const auto fixed = PCCD::orthonormalize(entries);
+    py::array_t<double> out({rows, py::ssize_t(4)});
+    auto o = out.mutable_unchecked<2>();
+    for (py::ssize_t i = 0; i < 3; ++i) {
+        for (py::ssize_t j = 0; j < 3; ++j) o(i, j) = fixed.transform.rotation()(i, j);
+        o(i, 3) = fixed.transform.translation()(i);
+    }
+    if (rows == 4) {
+        for (py::ssize_t j = 0; j < 3; ++j) o(3, j) = 0.0;
+        o(3, 3) = 1.0;
+    }
+    return py::make_tuple(out, fixed.moved);
+}
+
+std::string path_argument(py::handle value, const char* function, const char* name)
+{
+    if (value.is_none())
+        throw py::type_error(std::string(function) + "(): " + name + " must be a str, bytes or os.PathLike, not None");
+    // Looked up once and never released: a static py::object would be released after the
+    // interpreter has finalized.
+    static const py::object& fspath = *new py::object(py::module_::import("os").attr("fspath"));
+    static const py::object& fsdecode = *new py::object(py::module_::import("os").attr("fsdecode"));
+    py::object path;
+    try {
+        path = fspath(value);
+    } catch (py::error_already_set& e) {
+        if (!e.matches(PyExc_TypeError)) throw;
+        throw py::type_error(std::string(function) + "(): " + name + " must be a str, bytes or os.PathLike, not " +
+                             std::string(py::str(py::type::handle_of(value).attr("__name__"))));
+    }
+    return py::str(fsdecode(path));
 }
 
 py::array matrix_view(const Eigen::Matrix3Xd& m, py::handle owner)

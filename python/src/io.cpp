@@ -6,6 +6,9 @@
 #include <PCCD/IO/read_points.h>
 #include <PCCD/IO/write_points.h>
 
+#include <PCCD/Error.h>
+
+#include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
@@ -37,7 +40,7 @@ OFF or PLY mesh the vertices are the points.
 
 Parameters
 ----------
-path : str or os.PathLike
+path : str, bytes or os.PathLike
     The file to read.
 
 Returns
@@ -51,8 +54,10 @@ normals : numpy.ndarray or None
 Raises
 ------
 OSError
-    The file is missing, unreadable, empty, truncated or malformed, or holds a NaN or infinite
-    coordinate; the message starts with the file name and names the problem.
+    The file is missing, a directory, unreadable, empty, truncated or malformed, or holds a NaN or
+    infinite coordinate; the message starts with the file name and names the problem.
+TypeError
+    `path` is not a str, bytes or os.PathLike (None included).
 
 Examples
 --------
@@ -68,7 +73,7 @@ that every float64 reads back exactly.
 
 Parameters
 ----------
-path : str or os.PathLike
+path : str, bytes or os.PathLike
     The file to write (replaced if it exists).
 points : array_like
     (N, 3) array of float32 or float64 numbers.
@@ -93,7 +98,9 @@ void add_io(py::module_& m)
     m.def(
         "read_points",
         [](const py::object& path) {
-            const std::string file = py::str(path);
+            const std::string file = path_argument(path, "read_points", "path");
+            if (std::filesystem::is_directory(file))
+                throw PCCD::File_error(file, "is a directory, not a point file (.ply, .off, .xyz or .pwn)");
             PCCD::Point_data data;
             {
                 py::gil_scoped_release release;
@@ -106,7 +113,7 @@ void add_io(py::module_& m)
     m.def(
         "write_points",
         [](const py::object& path, const py::object& points, const py::object& normals, bool binary) {
-            const std::string file = py::str(path);
+            const std::string file = path_argument(path, "write_points", "path");
             PCCD::Point_data data;
             data.points = array_to_rows(row_array(points, "points"));
             if (!normals.is_none()) {

@@ -109,9 +109,22 @@ PCCD::Point_cloud_object_options object_options(const py::kwargs& kwargs)
 }
 
 /// Normals as hints: the constructor with a normal map.
-Object build(const py::handle& points, const py::handle& normals, const py::kwargs& kwargs)
+Object build(py::handle points, py::handle normals, const py::kwargs& kwargs)
 {
     const PCCD::Point_cloud_object_options options = object_options(kwargs);
+    // An Open3D point cloud (open3d.geometry.PointCloud), or anything alike: its `points`, and its
+    // `normals` when it has some and none are given. Duck-typed, so Open3D is not needed here.
+    py::object cloud_points, cloud_normals;
+    if (!py::isinstance<py::array>(points) && py::hasattr(points, "points") && py::hasattr(points, "has_normals")) {
+        static const py::object& asarray = *new py::object(py::module_::import("numpy").attr("asarray")); // never released
+        const py::object cloud = py::reinterpret_borrow<py::object>(points);
+        cloud_points = asarray(cloud.attr("points"));
+        points = cloud_points;
+        if (normals.is_none() && py::bool_(cloud.attr("has_normals")())) {
+            cloud_normals = asarray(cloud.attr("normals"));
+            normals = cloud_normals;
+        }
+    }
     const Row_array p = row_array(points, "points");
     std::optional<Row_array> n;
     if (!normals.is_none()) {
@@ -151,9 +164,11 @@ any number of queries may use it at once, from any thread.
 
 Parameters
 ----------
-points : array_like
+points : array_like or open3d.geometry.PointCloud
     (N, 3) array of float32 or float64 numbers (N >= 2), read in place; other numeric dtypes are
-    converted to float64 first.
+    converted to float64 first. Anything numpy converts (lists, objects exposing ``__array__``)
+    is accepted, and so is an Open3D point cloud: its points, and its normals when it has some
+    and `normals` is not given.
 normals : array_like, optional
     (N, 3) array, one normal per point, used as hints that orient the surface's normals (a zero or
     non-finite row counts as missing for its point).
@@ -235,7 +250,7 @@ void add_object(py::module_& m)
         .def(
             "save",
             [](const Object& self, const py::object& path) {
-                const std::string file = py::str(path);
+                const std::string file = path_argument(path, "Object.save", "path");
                 py::gil_scoped_release release;
                 self.save(file);
             },
@@ -258,7 +273,7 @@ OSError
         .def_static(
             "load",
             [](const py::object& path, std::optional<std::size_t> leaf_size, std::optional<std::string> volume) {
-                const std::string file = py::str(path);
+                const std::string file = path_argument(path, "Object.load", "path");
                 std::optional<PCCD::Point_cloud_hierarchy_options> hierarchy;
                 if (leaf_size || volume) {
                     hierarchy.emplace();

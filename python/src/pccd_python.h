@@ -49,8 +49,18 @@ struct Row_array {
 Row_array row_array(py::handle value, const char* name);
 
 /// A pose argument: a 3x4 [R | t] or 4x4 homogeneous array-like (last row 0 0 0 1), or None for
-/// the identity. Raises ValueError (PCCD::Invalid_input) naming `name` when it is not rigid.
+/// the identity. Raises ValueError (PCCD::Invalid_input) naming `name` when it is not rigid (the
+/// rule of Rigid_transform_3: R^T R - I within its default tolerance, det R > 0; the last row of a
+/// 4x4 within the same tolerance of 0 0 0 1).
 PCCD::Rigid_transform_3<double> pose_argument(py::handle value, const char* name);
+
+/// pccd.orthonormalize(pose): (the pose with the nearest rotation, in the shape given, and the
+/// largest change of an entry), PCCD::orthonormalize on a 3x4 or 4x4 array.
+py::tuple orthonormalize_pose(py::handle value);
+
+/// A path argument (str, bytes or os.PathLike) as a str, decoded as os.fsdecode does; TypeError
+/// naming `function` and `name` for None or anything else.
+std::string path_argument(py::handle value, const char* function, const char* name);
 
 /// A read-only (N, 3) float64 view of the 3 x N column-major matrix `m`, kept alive by `owner`.
 py::array matrix_view(const Eigen::Matrix3Xd& m, py::handle owner);

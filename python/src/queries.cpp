@@ -12,8 +12,10 @@
 
 #include <pybind11/stl.h>
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -24,9 +26,13 @@ namespace pccd_python {
 
 namespace {
 
-/// What a query returns to Python: PCCD's result, converted on access.
+/// What a query returns to Python: PCCD's result, converted on access; the query's wall time
+/// (NaN for the results of a batch, timed as a whole); the counters' dict, built at the first
+/// access and the same object afterwards.
 struct Result {
     PCCD::Intersection_result r;
+    double query_us = std::numeric_limits<double>::quiet_NaN();
+    py::object counters = {};
 };
 
 /// The options and the leaf intersector of one call.
@@ -98,7 +104,8 @@ Query_parameters parameters(const Query_arguments& arguments)
         o.traversal = PCCD::Traversal::likelihood;
     else
         throw py::value_error("traversal must be 'likelihood', 'depth_first' or 'flat', not '" + traversal + "'");
-    o.max_time_us = max_time_us;
+    // 0 means no budget, as `pccd collide --budget-us 0` does.
+    o.max_time_us = max_time_us && *max_time_us == 0.0 ? std::nullopt : max_time_us;
     o.symmetric = symmetric;
     o.verify_contacts = verify_contacts;
     o.contact_tolerance = contact_tolerance;
@@ -194,11 +201,18 @@ Result query(const Object& a, const py::handle& pose_a, const Object& b, const p
 {
     const PCCD::Rigid_transform_3<double> ta = pose_argument(pose_a, "pose_a");
     const PCCD::Rigid_transform_3<double> tb = pose_argument(pose_b, "pose_b");
-    py::gil_scoped_release release;
-    return with_policy(q, [&](const auto& policy) {
-        return Result{first_hit ? PCCD::do_intersect(a, ta, b, tb, q.options, policy)
-                                : PCCD::intersection_points(a, ta, b, tb, q.options, policy)};
-    });
+    PCCD::Intersection_result r;
+    double us = 0.0;
+    {
+        py::gil_scoped_release release;
+        const auto start = std::chrono::steady_clock::now();
+        r = with_policy(q, [&](const auto& policy) {
+            return first_hit ? PCCD::do_intersect(a, ta, b, tb, q.options, policy)
+                             : PCCD::intersection_points(a, ta, b, tb, q.options, policy);
+        });
+        us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
+    }
+    return Result{std::move(r), us};
 }
 
 std::vector<Result> many(const py::iterable& pairs, std::optional<unsigned> threads, std::uint64_t first_index, bool first_hit,
@@ -258,21 +272,7 @@ const char* kind_name(PCCD::Intersection_point_kind kind)
 py::dict counters_dict(const PCCD::Intersection_counters& c)
 {
     py::dict d;
-    d["f_evaluations"] = c.f_evaluations;
-    d["brackets_tried"] = c.brackets_tried;
-    d["partner_candidates"] = c.partner_candidates;
-    d["brackets_found"] = c.brackets_found;
-    d["search_steps"] = c.search_steps;
-    d["bisection_steps"] = c.bisection_steps;
-    d["samples"] = c.samples;
-    d["candidate_points"] = c.candidate_points;
-    d["refinement_samples"] = c.refinement_samples;
-    d["node_pairs"] = c.node_pairs;
-    d["leaf_pairs"] = c.leaf_pairs;
-    d["candidates_rejected"] = c.candidates_rejected;
-    d["pending_node_pairs"] = c.pending_node_pairs;
-    d["certification_passes"] = c.certification_passes;
-    d["unverified_crossings"] = c.unverified_crossings;
+    PCCD::for_each_counter(c, [&](const char* name, std::size_t value) { d[name] = value; });
     return d;
 }
 
@@ -303,8 +303,9 @@ traversal : {'likelihood', 'depth_first', 'flat'}, optional
     How the two objects' hierarchies are walked (default 'likelihood'); 'flat' is the published
     method. See doc/manual/hierarchy.md.
 max_time_us : float, optional
-    Time budget in microseconds; None (default): no limit. A query that runs out before finding a
-    contact answers with status 'undecided' (never 'separate').
+    Time budget in microseconds; None (default) or 0: no limit (as ``pccd collide --budget-us
+    0``). A query that runs out before finding a contact answers with status 'undecided' (never
+    'separate').
 symmetric : bool, optional
     Sample both objects (default True) or only the one with fewer candidate points.
 verify_contacts : bool, optional
@@ -478,9 +479,18 @@ f_values : numpy.ndarray
 kinds : list of str
     How each point was obtained: 'approximate', 'refined' or 'sampled'.
 counters : dict
-    The query's work counters (f_evaluations, brackets_tried, ...), deterministic for a seed.
+    The query's work counters (f_evaluations, brackets_tried, ...), deterministic for a seed, named
+    as in ``pccd collide --json``. Built at the first access; later accesses return the same dict
+    (copy it before changing it).
 closest_estimate : float
-    RST only: the smallest max(|f_A|, |f_B|) over its samples (inf when none had both).
+    How far the surfaces are from touching, as far as the query looked; both methods. Interpolation
+    search ('isearch'): the smallest |f| of one surface at the other cloud's sampled points;
+    randomized sampling ('rst'): the smallest max(|f_A|, |f_B|) over its samples. inf when no
+    sample had the value defined, or when the hierarchies' separation test decided.
+query_us : float
+    Wall-clock microseconds of the query in PCCD's C++ (without the conversion of the arguments),
+    as ``query_us`` of ``pccd collide --json``; NaN for the results of ``do_intersect_many`` and
+    ``intersection_points_many``, whose pairs run concurrently and are timed as a whole.
 )doc";
 
 } // namespace
@@ -514,8 +524,13 @@ void add_queries(py::module_& m)
                                    for (const auto& p : r.r.points) kinds.append(kind_name(p.kind));
                                    return kinds;
                                })
-        .def_property_readonly("counters", [](const Result& r) { return counters_dict(r.r.counters); })
+        .def_property_readonly("counters",
+                               [](Result& r) {
+                                   if (!r.counters) r.counters = counters_dict(r.r.counters);
+                                   return r.counters;
+                               })
         .def_property_readonly("closest_estimate", [](const Result& r) { return r.r.closest_estimate; })
+        .def_property_readonly("query_us", [](const Result& r) { return r.query_us; })
         .def("__bool__", [](const Result& r) { return r.r.intersects; })
         .def("__repr__", [](const Result& r) {
             return std::string("<pccd.Result: ") + PCCD::to_string(r.r.status) + ", " + std::to_string(r.r.points.size()) +
@@ -551,6 +566,42 @@ void add_queries(py::module_& m)
             return many(pairs, arguments.threads, arguments.first_index, false, parameters(arguments));
         },
         py::arg("pairs"), intersection_points_many_doc.c_str());
+    m.def("orthonormalize", &orthonormalize_pose, py::arg("pose"),
+          R"doc(The rigid pose nearest to `pose`, and how far it is: the opt-in repair of a rotation that is
+not quite one.
+
+Queries accept a pose whose R^T R differs from the identity by at most 1e-5 per entry (a rotation
+printed with 6 decimals always passes) and refuse the others with a ValueError. This function
+replaces R by its nearest rotation matrix in the Frobenius norm (the orthogonal polar factor, by
+SVD), however far that is, and says how far it moved: compare that with what the source's
+rounding explains before using the result.
+
+Parameters
+----------
+pose : array_like
+    A 3x4 [R | t] or 4x4 homogeneous matrix (last row 0 0 0 1 within 1e-5).
+
+Returns
+-------
+pose : numpy.ndarray
+    The same shape, float64, with R replaced by the nearest rotation (t unchanged).
+moved : float
+    The largest absolute change of an entry of R.
+
+Raises
+------
+ValueError
+    Wrong shape, a NaN or infinite entry, or an R that is singular or a reflection (det < 0):
+    it has no nearest proper rotation.
+TypeError
+    `pose` is None.
+
+Examples
+--------
+>>> pose, moved = pccd.orthonormalize(np.round(pose, 3))
+>>> moved < 1e-3
+True
+)doc");
     m.def("pair_seed", &PCCD::pair_seed, py::arg("seed"), py::arg("index"),
           R"doc(The seed of pair `index` of a batch whose seed is `seed`.
 

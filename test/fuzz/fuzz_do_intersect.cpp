@@ -175,7 +175,7 @@ std::vector<Eigen::Vector3d> decode_cloud(Byte_source& in)
 
 /// A pose. Kind byte % 4: 0 and 1 a unit quaternion (four int16, the identity when they are all
 /// near zero) and a translation; 2 the same rotation with each entry perturbed by int8 * 2^-(19 + k)
-/// (around the rigidity tolerance 1e-6); 3 twelve raw doubles (row-major [R | t]). Translation:
+/// (around the rigidity tolerance 1e-5); 3 twelve raw doubles (row-major [R | t]). Translation:
 /// three int16 / 4096 times 2^(e - 8), e from a byte (0..31).
 /// \throws PCCD::Invalid_input when the matrix is not a rigid motion.
 Pose decode_pose(Byte_source& in)

@@ -17,7 +17,8 @@ def unit_cube(points):
 
 def test_quickstart_runs_and_saves_the_curve(source_dir, bunny_file, tmp):
     script = source_dir / "examples" / "python" / "quickstart.py"
-    done = subprocess.run([sys.executable, str(script)], cwd=tmp, capture_output=True, text=True, timeout=600)
+    done = subprocess.run([sys.executable, str(script), "--out", str(tmp)], cwd=tmp, capture_output=True, text=True,
+                          timeout=600)
     assert done.returncode == 0, done.stdout + done.stderr
     assert "B at x = 0.5: intersecting" in done.stdout
     assert "B at x = 3.0: separate" in done.stdout

@@ -3,9 +3,11 @@
 // evaluation figures are made of (doc/benchmarks.md).
 #pragma once
 
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -121,6 +123,31 @@ struct Intersection_counters {
     }
     friend bool operator==(const Intersection_counters&, const Intersection_counters&) = default;
 };
+
+/// Calls `f(name, value)` for every counter of `counters`, in a fixed order, with the name the
+/// tools and the Python module use for it (`pccd collide --json`, pccd.Result.counters): the one
+/// list of the counters' names. `Counters` is Intersection_counters, const or not (then `value` may
+/// be assigned).
+template <class Counters, class F>
+    requires std::same_as<std::remove_cvref_t<Counters>, Intersection_counters>
+void for_each_counter(Counters&& counters, F&& f)
+{
+    f("f_evaluations", counters.f_evaluations);
+    f("brackets_tried", counters.brackets_tried);
+    f("partner_candidates", counters.partner_candidates);
+    f("brackets_found", counters.brackets_found);
+    f("search_steps", counters.search_steps);
+    f("bisection_steps", counters.bisection_steps);
+    f("samples", counters.samples);
+    f("candidate_points", counters.candidate_points);
+    f("refinement_samples", counters.refinement_samples);
+    f("node_pairs", counters.node_pairs);
+    f("leaf_pairs", counters.leaf_pairs);
+    f("candidates_rejected", counters.candidates_rejected);
+    f("pending_node_pairs", counters.pending_node_pairs);
+    f("certification_passes", counters.certification_passes);
+    f("unverified_crossings", counters.unverified_crossings);
+}
 
 /// The result of do_intersect() and intersection_points(). A plain value: each query returns its own,
 /// so concurrent queries share nothing through their results.

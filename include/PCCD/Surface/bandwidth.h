@@ -38,6 +38,11 @@ inline double kernel_bandwidth(double sampling_radius, const Bandwidth_options& 
     }
     if (!(std::isfinite(options.eta) && options.eta > 0.0))
         throw Invalid_input(internal::concat("bandwidth: eta is ", options.eta, "; it must be finite and > 0"));
+    if (sampling_radius == 0.0)
+        throw Invalid_input("bandwidth: the sampling radius is 0; it must be finite and > 0. It is 0 when at least "
+                            "half of the points coincide with another point (the median distance to the nearest "
+                            "other point is 0): the points have no spacing to size the surface's kernel by; remove "
+                            "the duplicate points");
     if (!(std::isfinite(sampling_radius) && sampling_radius > 0.0))
         throw Invalid_input(internal::concat("bandwidth: the sampling radius is ", sampling_radius,
                                              "; it must be finite and > 0"));
