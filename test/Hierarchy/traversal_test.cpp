@@ -1,4 +1,4 @@
-// Tests of PCCD/Hierarchy/traversal.h, the one walk of every hierarchy query, against brute force on
+// Tests of PCCD/Hierarchy/traversal.h, the one walk of every hierarchy query, and of its concepts (PCCD/concepts/TreeWalk.h), against brute force on
 // explicit trees: a walk whose traits enter every node visits each node once and every leaf in the
 // order left_first() asks for; a pruned subtree is never entered; go_further() stops the walk and
 // reports what was pending; the pair walk reports every leaf pair exactly once for each split
@@ -7,6 +7,7 @@
 // reach and overlapping-leaf traversals, the kinetic queries) have tests of their own against
 // brute force.
 #include <PCCD/Hierarchy/traversal.h>
+#include <PCCD/concepts/TreeWalk.h>
 
 #include <catch2/catch.hpp>
 
