@@ -2,7 +2,7 @@
 // (doc/algorithms.md "Point cloud hierarchy", doc/manual/hierarchy.md "Reaches"): whether the point
 // lies within the reach of some point of the cloud (where the cloud's surface can be defined), the
 // nearest point of the cloud, and a cheap near point found by one descent. Each is a traits class
-// of the one walk of traversal.h.
+// of the walks of traversal.h (traverse(), descend()).
 #pragma once
 
 #include <cstddef>
@@ -49,38 +49,51 @@ struct Within_reach_traits {
     bool left_first(Point_cloud_hierarchy::Index) const { return true; }
 };
 
-/// nearest_point() (and, stopping at the first leaf, descend_to_near_point()) as traits of
-/// traverse(): branch and bound over the boxes, the nearer child first.
+/// The nearest point of a leaf's points to q, kept in `best` (position in hierarchy order, squared
+/// distance).
+inline void nearest_in_leaf(const Point_cloud_hierarchy& t, const Eigen::Matrix4Xd& points, Point_cloud_hierarchy::Index i,
+                            const Eigen::Vector3d& q, std::pair<std::size_t, double>& best)
+{
+    const auto& node = t.node(i);
+    std::pair<std::size_t, double> local = best; // in registers while the leaf is scanned
+    for (auto k = node.first; k < node.first + node.count; ++k) {
+        const double d = (points.col(k).head<3>() - q).squaredNorm();
+        if (d < local.second) local = {k, d};
+    }
+    best = local;
+}
+
+/// nearest_point() as traits of traverse(): branch and bound over the boxes, the nearer child first.
 struct Nearest_point_traits {
     const Point_cloud_hierarchy& t;
     const Eigen::Matrix4Xd& points;
-    const Eigen::Vector3d& q;
-    /// Stop after the first leaf and enter every node on the way (one descent, no bound).
-    bool one_descent = false;
+    const Eigen::Vector3d q; // a copy: `best` is written during the walk and could alias a reference
     std::pair<std::size_t, double> best{t.size(), std::numeric_limits<double>::infinity()};
-    bool leaf_seen = false;
 
-    bool go_further() const { return !(one_descent && leaf_seen); }
-    bool enter(Point_cloud_hierarchy::Index i) const
-    {
-        return one_descent || t.node(i).box.squaredExteriorDistance(q) < best.second;
-    }
-    void leaf(Point_cloud_hierarchy::Index i)
-    {
-        leaf_seen = true;
-        const auto& node = t.node(i);
-        for (auto k = node.first; k < node.first + node.count; ++k) {
-            const double d = (points.col(k).head<3>() - q).squaredNorm();
-            if (d < best.second) best = {k, d};
-        }
-    }
+    bool go_further() const { return true; }
+    bool enter(Point_cloud_hierarchy::Index i) const { return t.node(i).box.squaredExteriorDistance(q) < best.second; }
+    void leaf(Point_cloud_hierarchy::Index i) { nearest_in_leaf(t, points, i, q, best); }
     bool left_first(Point_cloud_hierarchy::Index i) const
     {
-        const auto& l = t.node(t.left(i)).box;
-        const auto& r = t.node(t.right(i)).box;
-        const double dl = l.squaredExteriorDistance(q), dr = r.squaredExteriorDistance(q);
-        if (one_descent && dl == dr) return (l.center() - q).squaredNorm() <= (r.center() - q).squaredNorm();
-        return !(dr < dl);
+        return !(t.node(t.right(i)).box.squaredExteriorDistance(q) < t.node(t.left(i)).box.squaredExteriorDistance(q));
+    }
+};
+
+/// descend_to_near_point() as traits of descend(): into the child whose box lies nearer q, the one
+/// whose centre is nearer when the boxes are equally near.
+struct Near_point_descent_traits {
+    const Point_cloud_hierarchy& t;
+    const Eigen::Matrix4Xd& points;
+    const Eigen::Vector3d q; // a copy, as above
+    std::pair<std::size_t, double> best{t.size(), std::numeric_limits<double>::infinity()};
+
+    void leaf(Point_cloud_hierarchy::Index i) { nearest_in_leaf(t, points, i, q, best); }
+    Point_cloud_hierarchy::Index next(Point_cloud_hierarchy::Index i) const
+    {
+        const Point_cloud_hierarchy::Index l = t.left(i), r = t.right(i);
+        const double dl = t.node(l).box.squaredExteriorDistance(q), dr = t.node(r).box.squaredExteriorDistance(q);
+        if (dl != dr) return dl < dr ? l : r;
+        return (t.node(l).box.center() - q).squaredNorm() <= (t.node(r).box.center() - q).squaredNorm() ? l : r;
     }
 };
 
@@ -119,8 +132,8 @@ inline std::pair<std::size_t, double> nearest_point(const Point_cloud_hierarchy&
 inline std::pair<std::size_t, double> descend_to_near_point(const Point_cloud_hierarchy& t, const Eigen::Vector3d& q)
 {
     if (t.empty()) return {t.size(), std::numeric_limits<double>::infinity()};
-    internal::Nearest_point_traits traits{t, t.ordered_points(), q, true};
-    traverse(t, Point_cloud_hierarchy::Index(0), traits);
+    internal::Near_point_descent_traits traits{t, t.ordered_points(), q};
+    descend(t, Point_cloud_hierarchy::Index(0), traits);
     return traits.best;
 }
 

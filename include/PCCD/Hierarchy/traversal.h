@@ -106,6 +106,23 @@ Walk_counters traverse(const Tree& tree, Index root, Traits& traits)
     return counters;
 }
 
+/// Descends `tree` from node `root` to one leaf without backtracking (a walk that stops at its first
+/// leaf and keeps no sibling): at each inner node i into the child traits.next(i) returns (one of
+/// tree.left(i), tree.right(i)), then traits.leaf() of the leaf reached, which it returns.
+/// Complexity: O(height), no stack.
+template <class Tree, class Index, class Traits>
+    requires WalkableTree<Tree, Index> && requires(Traits& traits, Index i) {
+        { traits.next(i) } -> std::convertible_to<Index>;
+        traits.leaf(i);
+    }
+Index descend(const Tree& tree, Index root, Traits& traits)
+{
+    Index i = root;
+    while (!tree.is_leaf(i)) i = traits.next(i);
+    traits.leaf(i);
+    return i;
+}
+
 /// Walks two trees at once, depth first from the pair (root_first, root_second): each pair whose
 /// enter() passes is reported (leaf_pair()) or opened as split() says, children in the orders the
 /// traits choose. Stops when go_further() is false. The two trees may be the same object (pairs of
