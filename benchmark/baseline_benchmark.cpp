@@ -16,18 +16,18 @@
 // <m>_false_positives (non-grazing poses), <m>_grazing_false_negatives, <m>_grazing_false_positives.
 #include "collision_baselines.h"
 
-#include <common/csv.h>
-#include <common/statistics.h>
-#include <common/timing.h>
+#include <PCCD/testing/csv.h>
+#include <PCCD/testing/statistics.h>
+#include <PCCD/testing/timing.h>
 
 #include <PCCD/Exact/Exact_mesh.h>
 #include <PCCD/Exact/mesh_separation.h>
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Point_cloud.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Similarity_3.h>
-#include <PCCD/Sampling/pose_generator.h>
-#include <PCCD/Sampling/sample_triangle_mesh.h>
+#include <PCCD/testing/Similarity_3.h>
+#include <PCCD/testing/pose_generator.h>
+#include <PCCD/sample_triangle_mesh.h>
 #include <PCCD/sampling_radius.h>
 
 #include <algorithm>

@@ -11,11 +11,11 @@
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Similarity_3.h>
-#include <PCCD/Sampling/sample_triangle_mesh.h>
+#include <PCCD/testing/Similarity_3.h>
+#include <PCCD/sample_triangle_mesh.h>
 #include <PCCD/internal/spatial_order.h>
 
-#include <common/timing.h>
+#include <PCCD/testing/timing.h>
 
 #include <algorithm>
 #include <cstdio>

@@ -20,12 +20,12 @@
 #include <PCCD/Proximity_graph/knn_graph.h>
 #include <PCCD/Proximity_graph/sphere_of_influence_graph.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Torus_shape.h>
-#include <PCCD/Sampling/Similarity_3.h>
-#include <PCCD/Sampling/sample_triangle_mesh.h>
+#include <PCCD/testing/Torus_shape.h>
+#include <PCCD/testing/Similarity_3.h>
+#include <PCCD/sample_triangle_mesh.h>
 #include <PCCD/sampling_radius.h>
 
-#include <common/timing.h>
+#include <PCCD/testing/timing.h>
 
 #include <algorithm>
 #include <chrono>

@@ -18,17 +18,17 @@
 // FCL's, p99, and how often each traversal's verdict differs from the flat traversal's and from FCL's.
 #include "collision_baselines.h"
 
-#include <common/csv.h>
-#include <common/statistics.h>
-#include <common/timing.h>
+#include <PCCD/testing/csv.h>
+#include <PCCD/testing/statistics.h>
+#include <PCCD/testing/timing.h>
 
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Similarity_3.h>
-#include <PCCD/Sampling/pose_generator.h>
-#include <PCCD/Sampling/sample_triangle_mesh.h>
+#include <PCCD/testing/Similarity_3.h>
+#include <PCCD/testing/pose_generator.h>
+#include <PCCD/sample_triangle_mesh.h>
 
 #include <algorithm>
 #include <cstdio>

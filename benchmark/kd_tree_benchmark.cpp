@@ -13,8 +13,8 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/property_map.h>
 
-#include <common/statistics.h>
-#include <common/timing.h>
+#include <PCCD/testing/statistics.h>
+#include <PCCD/testing/timing.h>
 
 #include <algorithm>
 #include <chrono>

@@ -29,11 +29,11 @@
 // either side of the middle of its +x edge, from 0.3 below to 0.1 above the top, so the answer is a
 // smaller part of the cloth than the table overlap's (f = 0.25: about 4 %, 1: about a third at
 // 6,890 triangles); the query's footprint is what decides between the trees.
-#include <scenes/Cloth_scene.h>
-#include <scenes/run_kinetic_scene.h>
+#include <PCCD/testing/scenes/Cloth_scene.h>
+#include <PCCD/testing/scenes/run_kinetic_scene.h>
 
-#include <common/statistics.h>
-#include <common/timing.h>
+#include <PCCD/testing/statistics.h>
+#include <PCCD/testing/timing.h>
 
 #include <algorithm>
 #include <chrono>

@@ -3,7 +3,7 @@
 // changed at a time, and the point-level evidence is counted. Prints one line per missed pose and a
 // tally of causes (doc/benchmarks.md "Missed contacts: causes").
 //   build/benchmark/miss_causes --models anchor.off part.off --points 500 --rotations 20
-#include "../test/validation/scan_validation.h"
+#include <PCCD/testing/scan_validation.h>
 
 #include <CLI/CLI.hpp>
 

@@ -7,7 +7,7 @@
 // table of "Missed contacts" (CAD and mechanical parts at four densities) from
 //   build/benchmark/scan_accuracy --cad --rotations 50
 // (test_cad_validation runs it with fewer poses and models).
-#include "../test/validation/scan_validation.h"
+#include <PCCD/testing/scan_validation.h>
 
 #include <CLI/CLI.hpp>
 

@@ -13,10 +13,10 @@
 // default Point_cloud_object options (r-SIG, eta = 3, theta_eps = 1e-2).
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Proximity_graph/internal/graph_construction.h>
-#include <PCCD/Sampling/Sphere_shape.h>
+#include <PCCD/testing/Sphere_shape.h>
 
-#include <common/statistics.h>
-#include <common/timing.h>
+#include <PCCD/testing/statistics.h>
+#include <PCCD/testing/timing.h>
 
 #include <algorithm>
 #include <chrono>

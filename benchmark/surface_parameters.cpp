@@ -11,9 +11,9 @@
 // right).
 #include <PCCD/Point_cloud.h>
 #include <PCCD/sampling_radius.h>
-#include <PCCD/Sampling/Sphere_shape.h>
-#include <PCCD/Sampling/Torus_shape.h>
-#include <PCCD/Sampling/Plane_patch_shape.h>
+#include <PCCD/testing/Sphere_shape.h>
+#include <PCCD/testing/Torus_shape.h>
+#include <PCCD/testing/Plane_patch_shape.h>
 #include <PCCD/Proximity_graph/sphere_of_influence_graph.h>
 #include <PCCD/Geodesic/Close_pairs_shortest_paths.h>
 #include <PCCD/Surface/Euclidean_distance.h>

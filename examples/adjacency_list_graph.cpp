@@ -5,7 +5,7 @@
 // compared with the torus' exact signed distance.
 #include <PCCD/Geodesic/Close_pairs_shortest_paths.h>
 #include <PCCD/Point_cloud.h>
-#include <PCCD/Sampling/Torus_shape.h>
+#include <PCCD/testing/Torus_shape.h>
 #include <PCCD/Surface/Gaussian_weight.h>
 #include <PCCD/Surface/Geodesic_distance.h>
 #include <PCCD/Surface/WLS_surface.h>

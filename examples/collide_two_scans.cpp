@@ -6,9 +6,9 @@
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/Similarity_3.h>
-#include <PCCD/Sampling/Torus_shape.h>
-#include <PCCD/Sampling/sample_triangle_mesh.h>
+#include <PCCD/testing/Similarity_3.h>
+#include <PCCD/testing/Torus_shape.h>
+#include <PCCD/sample_triangle_mesh.h>
 
 #include <Eigen/Geometry>
 

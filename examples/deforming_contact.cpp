@@ -6,8 +6,8 @@
 #include <PCCD/Kinetic/Deforming_point_cloud_object.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Plane_patch_shape.h>
-#include <PCCD/Sampling/Sphere_shape.h>
+#include <PCCD/testing/Plane_patch_shape.h>
+#include <PCCD/testing/Sphere_shape.h>
 
 #include <cmath>
 #include <iostream>

@@ -2,7 +2,7 @@
 // one call, then evaluate f(x) = n(x) . (x - a(x)) at cloud points and anywhere near the cloud; far
 // away f is undefined.
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/Torus_shape.h>
+#include <PCCD/testing/Torus_shape.h>
 
 #include <iostream>
 #include <optional>

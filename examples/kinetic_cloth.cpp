@@ -2,7 +2,7 @@
 // collision query and a ray query at 30 frames per second (doc/manual/kinetic.md).
 #include <PCCD/Kinetic/Kinetic_AABB_tree.h>
 #include <PCCD/Kinetic/Piecewise_linear_flightplan.h>
-#include <scenes/Cloth_scene.h>
+#include <PCCD/testing/scenes/Cloth_scene.h>
 
 #include <iostream>
 #include <utility>

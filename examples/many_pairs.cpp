@@ -6,8 +6,8 @@
 #include <PCCD/Intersection/do_intersect_many.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Sphere_shape.h>
-#include <PCCD/Sampling/Torus_shape.h>
+#include <PCCD/testing/Sphere_shape.h>
+#include <PCCD/testing/Torus_shape.h>
 
 #include <Eigen/Geometry>
 

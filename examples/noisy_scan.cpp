@@ -5,7 +5,7 @@
 // bounding box, so the example needs no data files.
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/Torus_shape.h>
+#include <PCCD/testing/Torus_shape.h>
 
 #include <Eigen/Geometry>
 

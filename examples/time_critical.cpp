@@ -5,7 +5,7 @@
 #include <PCCD/Hierarchy/Sphere_covering.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/Sphere_shape.h>
+#include <PCCD/testing/Sphere_shape.h>
 
 #include <cstdio>
 

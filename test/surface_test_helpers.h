@@ -5,9 +5,9 @@
 
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Plane_patch_shape.h>
-#include <PCCD/Sampling/Sphere_shape.h>
-#include <PCCD/Sampling/Torus_shape.h>
+#include <PCCD/testing/Plane_patch_shape.h>
+#include <PCCD/testing/Sphere_shape.h>
+#include <PCCD/testing/Torus_shape.h>
 
 #include <Eigen/Core>
 

@@ -10,10 +10,10 @@
 
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/pose_generator.h>
-#include <PCCD/Sampling/sample_triangle_mesh.h>
+#include <PCCD/testing/pose_generator.h>
+#include <PCCD/sample_triangle_mesh.h>
 
-#include <common/statistics.h>
+#include <PCCD/testing/statistics.h>
 
 #include <algorithm>
 #include <cmath>

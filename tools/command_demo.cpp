@@ -12,9 +12,9 @@
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud.h>
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/pose_generator.h>
+#include <PCCD/testing/pose_generator.h>
 
-#include <common/timing.h>
+#include <PCCD/testing/timing.h>
 
 #include <algorithm>
 #include <chrono>

@@ -11,8 +11,8 @@
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Proximity_graph/graph_components.h>
 
-#include <common/statistics.h>
-#include <common/timing.h>
+#include <PCCD/testing/statistics.h>
+#include <PCCD/testing/timing.h>
 
 #include <nlohmann/json.hpp>
 

@@ -14,12 +14,12 @@
 
 #include <PCCD/Error.h>
 
-#include <scenes/Bunny_contact_scene.h>
-#include <scenes/Cloth_scene.h>
-#include <scenes/Deforming_cloud_scene.h>
-#include <scenes/Random_motion_scene.h>
-#include <scenes/run_contact_scene.h>
-#include <scenes/run_kinetic_scene.h>
+#include <PCCD/testing/scenes/Bunny_contact_scene.h>
+#include <PCCD/testing/scenes/Cloth_scene.h>
+#include <PCCD/testing/scenes/Deforming_cloud_scene.h>
+#include <PCCD/testing/scenes/Random_motion_scene.h>
+#include <PCCD/testing/scenes/run_contact_scene.h>
+#include <PCCD/testing/scenes/run_kinetic_scene.h>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>

@@ -5,9 +5,9 @@
 
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Torus_shape.h>
-#include <PCCD/Sampling/Similarity_3.h>
-#include <PCCD/Sampling/sample_triangle_mesh.h>
+#include <PCCD/testing/Torus_shape.h>
+#include <PCCD/testing/Similarity_3.h>
+#include <PCCD/sample_triangle_mesh.h>
 
 #include <cstdint>
 #include <cstdlib>

@@ -9,9 +9,9 @@
 #include <PCCD/IO/read_points.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/Similarity_3.h>
+#include <PCCD/testing/Similarity_3.h>
 
-#include <common/timing.h>
+#include <PCCD/testing/timing.h>
 
 #include "progress.h"
 

@@ -3,8 +3,8 @@
 #include "figures.h"
 #include "runner.h"
 
-#include <common/csv.h>
-#include <common/statistics.h>
+#include <PCCD/testing/csv.h>
+#include <PCCD/testing/statistics.h>
 
 #include <cmath>
 #include <cstdio>

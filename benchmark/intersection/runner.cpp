@@ -1,8 +1,8 @@
 // benchmark/intersection/runner.cpp -- timing the methods and tallying their answers.
 #include "runner.h"
 
-#include <common/statistics.h>
-#include <common/timing.h>
+#include <PCCD/testing/statistics.h>
+#include <PCCD/testing/timing.h>
 
 #include <PCCD/Exact/mesh_separation.h>
 

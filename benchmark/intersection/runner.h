@@ -9,7 +9,7 @@
 #include <PCCD/Exact/Exact_mesh.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/pose_generator.h>
+#include <PCCD/testing/pose_generator.h>
 
 #include <cstddef>
 #include <cstdint>

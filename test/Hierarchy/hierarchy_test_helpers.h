@@ -4,7 +4,7 @@
 
 #include <PCCD/Random.h>
 #include <PCCD/Rigid_transform_3.h>
-#include <PCCD/Sampling/pose_generator.h>
+#include <PCCD/testing/pose_generator.h>
 
 #include <Eigen/Core>
 

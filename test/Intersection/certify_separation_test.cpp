@@ -9,7 +9,7 @@
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/pose_generator.h>
+#include <PCCD/testing/pose_generator.h>
 
 #include <catch2/catch.hpp>
 

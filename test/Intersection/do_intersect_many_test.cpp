@@ -10,7 +10,7 @@
 #include <PCCD/Intersection/do_intersect_many.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/pose_generator.h>
+#include <PCCD/testing/pose_generator.h>
 
 #include "build_helpers.h"
 #include "intersection_test_helpers.h"

@@ -6,10 +6,10 @@
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Sphere_shape.h>
-#include <PCCD/Sampling/pose_generator.h>
+#include <PCCD/testing/Sphere_shape.h>
+#include <PCCD/testing/pose_generator.h>
 
-#include <common/statistics.h>
+#include <PCCD/testing/statistics.h>
 
 #include <catch2/catch.hpp>
 

@@ -9,8 +9,8 @@
 
 #include <catch2/catch.hpp>
 
-#include <scenes/Bunny_contact_scene.h>
-#include <scenes/run_contact_scene.h>
+#include <PCCD/testing/scenes/Bunny_contact_scene.h>
+#include <PCCD/testing/scenes/run_contact_scene.h>
 
 #include <algorithm>
 #include <cmath>

@@ -11,9 +11,9 @@
 #include <PCCD/Kinetic/Refit_AABB_tree.h>
 #include <PCCD/Random.h>
 
-#include <scenes/Cloth_scene.h>
-#include <scenes/Deforming_cloud_scene.h>
-#include <scenes/Random_motion_scene.h>
+#include <PCCD/testing/scenes/Cloth_scene.h>
+#include <PCCD/testing/scenes/Deforming_cloud_scene.h>
+#include <PCCD/testing/scenes/Random_motion_scene.h>
 
 #include <catch2/catch.hpp>
 

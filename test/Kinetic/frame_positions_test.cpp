@@ -11,8 +11,8 @@
 #include <PCCD/Kinetic/internal/Crossing_cache.h>
 #include <PCCD/Random.h>
 
-#include <scenes/Cloth_scene.h>
-#include <scenes/run_kinetic_scene.h>
+#include <PCCD/testing/scenes/Cloth_scene.h>
+#include <PCCD/testing/scenes/run_kinetic_scene.h>
 
 #include "kinetic_test_helpers.h"
 

@@ -10,10 +10,10 @@
 #include <PCCD/Kinetic/intersect_ray_triangle.h>
 #include <PCCD/Random.h>
 
-#include <scenes/Cloth_scene.h>
-#include <scenes/Deforming_cloud_scene.h>
-#include <scenes/Random_motion_scene.h>
-#include <scenes/run_kinetic_scene.h>
+#include <PCCD/testing/scenes/Cloth_scene.h>
+#include <PCCD/testing/scenes/Deforming_cloud_scene.h>
+#include <PCCD/testing/scenes/Random_motion_scene.h>
+#include <PCCD/testing/scenes/run_kinetic_scene.h>
 
 #include <catch2/catch.hpp>
 

@@ -8,7 +8,7 @@
 #include <PCCD/Surface/Surface_fit.h>
 #include <PCCD/Surface/WLS_surface.h>
 
-#include <common/statistics.h>
+#include <PCCD/testing/statistics.h>
 
 #include <catch2/catch.hpp>
 

@@ -10,8 +10,8 @@
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Plane_patch_shape.h>
-#include <PCCD/Sampling/Sphere_shape.h>
+#include <PCCD/testing/Plane_patch_shape.h>
+#include <PCCD/testing/Sphere_shape.h>
 #include <PCCD/Surface/Euclidean_distance.h>
 #include <PCCD/Surface/bandwidth.h>
 #include <PCCD/Surface/estimate_normals.h>

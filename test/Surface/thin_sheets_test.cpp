@@ -13,7 +13,7 @@
 #include "surface_test_helpers.h"
 
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/Parallel_sheets_shape.h>
+#include <PCCD/testing/Parallel_sheets_shape.h>
 
 #include <catch2/catch.hpp>
 

@@ -4,8 +4,8 @@
 // procedural and seeded, so that the tests need no external data.
 #include <PCCD/IO/write_points.h>
 #include <PCCD/IO/write_triangle_mesh.h>
-#include <PCCD/Sampling/Sphere_shape.h>
-#include <PCCD/Sampling/Torus_shape.h>
+#include <PCCD/testing/Sphere_shape.h>
+#include <PCCD/testing/Torus_shape.h>
 
 #include <cmath>
 #include <cstdint>

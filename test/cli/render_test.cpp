@@ -11,7 +11,7 @@
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Sphere_shape.h>
+#include <PCCD/testing/Sphere_shape.h>
 
 #include <catch2/catch.hpp>
 

@@ -1,8 +1,8 @@
-// The benchmark poses (PCCD/Sampling/pose_generator.h): the layout of the configurations,
+// The benchmark poses (PCCD/testing/pose_generator.h): the layout of the configurations,
 // determinism, and the uniformity (Haar measure) of the random rotations by chi-square tests with
 // fixed seeds.
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/pose_generator.h>
+#include <PCCD/testing/pose_generator.h>
 
 #include <catch2/catch.hpp>
 

@@ -6,10 +6,10 @@
 // Statistical tests use fixed seeds and reject at significance level 0.001: the chi-square critical
 // value is the Wilson-Hilferty approximation of the 0.999 quantile, the KS critical value 1.95/sqrt(N).
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Parallel_sheets_shape.h>
-#include <PCCD/Sampling/Plane_patch_shape.h>
-#include <PCCD/Sampling/Sphere_shape.h>
-#include <PCCD/Sampling/Torus_shape.h>
+#include <PCCD/testing/Parallel_sheets_shape.h>
+#include <PCCD/testing/Plane_patch_shape.h>
+#include <PCCD/testing/Sphere_shape.h>
+#include <PCCD/testing/Torus_shape.h>
 
 #include <catch2/catch.hpp>
 

@@ -13,7 +13,7 @@
 // never as passed. Release runs 10 rotations per distance on six models; Debug and sanitizer builds
 // run a smoke version of the same code (one model, two densities, 2 rotations) with the same bounds.
 #include "../build_helpers.h"
-#include "scan_validation.h"
+#include <PCCD/testing/scan_validation.h>
 
 #include <cstdio>
 #include <cstdlib>

@@ -9,11 +9,11 @@
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/Similarity_3.h>
-#include <PCCD/Sampling/pose_generator.h>
-#include <PCCD/Sampling/sample_triangle_mesh.h>
+#include <PCCD/testing/Similarity_3.h>
+#include <PCCD/testing/pose_generator.h>
+#include <PCCD/sample_triangle_mesh.h>
 
-#include <common/statistics.h>
+#include <PCCD/testing/statistics.h>
 
 #include <catch2/catch.hpp>
 

@@ -10,7 +10,7 @@
 // never as passed. Release runs 20 rotations per distance on both models; Debug and sanitizer builds
 // run a smoke version of the same code (bunny, 3 rotations) and assert the same bounds.
 #include "../build_helpers.h"
-#include "scan_validation.h"
+#include <PCCD/testing/scan_validation.h>
 
 #include <cstdio>
 #include <cstdlib>
