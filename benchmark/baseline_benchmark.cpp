@@ -25,7 +25,7 @@
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Point_cloud.h>
 #include <PCCD/Random.h>
-#include <PCCD/testing/Similarity_3.h>
+#include <PCCD/Similarity_3.h>
 #include <PCCD/testing/pose_generator.h>
 #include <PCCD/sample_triangle_mesh.h>
 #include <PCCD/sampling_radius.h>

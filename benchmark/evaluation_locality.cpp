@@ -11,7 +11,7 @@
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
-#include <PCCD/testing/Similarity_3.h>
+#include <PCCD/Similarity_3.h>
 #include <PCCD/sample_triangle_mesh.h>
 #include <PCCD/internal/spatial_order.h>
 

@@ -21,7 +21,7 @@
 #include <PCCD/Proximity_graph/sphere_of_influence_graph.h>
 #include <PCCD/Random.h>
 #include <PCCD/testing/Torus_shape.h>
-#include <PCCD/testing/Similarity_3.h>
+#include <PCCD/Similarity_3.h>
 #include <PCCD/sample_triangle_mesh.h>
 #include <PCCD/sampling_radius.h>
 

@@ -26,7 +26,7 @@
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
-#include <PCCD/testing/Similarity_3.h>
+#include <PCCD/Similarity_3.h>
 #include <PCCD/testing/pose_generator.h>
 #include <PCCD/sample_triangle_mesh.h>
 

@@ -3,7 +3,7 @@
 // triangle areas, chi-square tests of the counts per triangle with fixed seeds, the expected spacing
 // of uniform samples, bounding boxes.
 #include <PCCD/Random.h>
-#include <PCCD/testing/Similarity_3.h>
+#include <PCCD/Similarity_3.h>
 #include <PCCD/sample_triangle_mesh.h>
 
 #include <CGAL/IO/OFF.h>

@@ -6,7 +6,7 @@
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Random.h>
 #include <PCCD/testing/Torus_shape.h>
-#include <PCCD/testing/Similarity_3.h>
+#include <PCCD/Similarity_3.h>
 #include <PCCD/sample_triangle_mesh.h>
 
 #include <cstdint>

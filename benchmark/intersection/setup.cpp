@@ -5,7 +5,7 @@
 
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Random.h>
-#include <PCCD/testing/Similarity_3.h>
+#include <PCCD/Similarity_3.h>
 #include <PCCD/sample_triangle_mesh.h>
 
 #include <cstdio>

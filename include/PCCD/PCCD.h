@@ -34,14 +34,8 @@
 #include <PCCD/IO/Point_data.h>
 #include <PCCD/IO/Triangle_mesh_data.h>
 
-// Test data: shapes, mesh sampling, benchmark poses
-#include <PCCD/testing/Parallel_sheets_shape.h>
-#include <PCCD/testing/Plane_patch_shape.h>
-#include <PCCD/testing/Similarity_3.h>
-#include <PCCD/testing/Sphere_shape.h>
-#include <PCCD/testing/Surface_sample.h>
-#include <PCCD/testing/Torus_shape.h>
-#include <PCCD/testing/pose_generator.h>
+// Clouds from triangle meshes, and the unit-cube normalization
+#include <PCCD/Similarity_3.h>
 #include <PCCD/sample_triangle_mesh.h>
 
 // Proximity graphs, the sampling radius, geodesic distances

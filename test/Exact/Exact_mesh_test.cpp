@@ -28,7 +28,7 @@
 #include <PCCD/IO/Triangle_mesh_data.h>
 #include <PCCD/Random.h>
 #include <PCCD/Rigid_transform_3.h>
-#include <PCCD/testing/Similarity_3.h>
+#include <PCCD/Similarity_3.h>
 #include <PCCD/testing/pose_generator.h>
 #include "build_helpers.h"
 #include "data_helpers.h"

@@ -18,7 +18,7 @@
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/testing/Similarity_3.h>
+#include <PCCD/Similarity_3.h>
 #include <PCCD/testing/pose_generator.h>
 #include <PCCD/sample_triangle_mesh.h>
 

@@ -1,5 +1,7 @@
-// PCCD/testing/Similarity_3.h -- Similarity_3 and the object normalization of the benchmark
-// procedure (doc/manual/sampling.md, "Normalization"): translate the bounding-box centre to the origin, then scale uniformly by
+// PCCD/Similarity_3.h -- Similarity_3 and the unit-cube normalization of an object, the first step
+// of the benchmark procedure (doc/manual/sampling.md, "Normalization") and the rescaling that the
+// input checks of Point_cloud and the proximity graphs suggest for clouds too large for their
+// arithmetic: translate the bounding-box centre to the origin, then scale uniformly by
 // 2 / (longest bounding-box side), so that the object fits [-1, 1]^3 and touches two opposite faces.
 // The applied similarity is returned, so that a mesh and the cloud sampled from it can be
 // normalized identically.
@@ -21,7 +23,7 @@
 #include <PCCD/concepts/ReadablePointMap.h>
 #include <PCCD/internal/finite.h>
 
-namespace PCCD::testing {
+namespace PCCD {
 
 /// The similarity without rotation x -> scale (x - centre): a translation by -centre followed by a
 /// uniform scaling about the origin (equivalently x -> scale x + translation()). Plain value type.
@@ -50,7 +52,7 @@ struct Similarity_3 {
     }
 };
 
-namespace detail {
+namespace internal {
 
 /// Accumulates a bounding box point by point and turns it into the unit-cube normalization.
 class Unit_cube_bbox {
@@ -59,7 +61,7 @@ public:
     {
         const Eigen::Vector3d p(x, y, z);
         if (!internal::all_finite(p))
-            throw Invalid_input(internal::concat("normalization: point ", m_count, " (", x, ", ", y, ", ", z,
+            throw Invalid_input(concat("normalization: point ", m_count, " (", x, ", ", y, ", ", z,
                                        ") is not finite"));
         m_min = m_min.cwiseMin(p);
         m_max = m_max.cwiseMax(p);
@@ -70,7 +72,7 @@ public:
     {
         if (m_count == 0) throw Invalid_input("normalization: the object has no points");
         if ((m_max.array() == m_min.array()).all())
-            throw Invalid_input(internal::concat("normalization: all ", m_count,
+            throw Invalid_input(concat("normalization: all ", m_count,
                                        " points coincide (zero extent); they cannot be scaled to [-1, 1]^3"));
         // The range checks come before the arithmetic they protect, which would otherwise overflow
         // (and trap when floating-point exceptions are enabled). Halved, the extent cannot overflow:
@@ -78,7 +80,7 @@ public:
         constexpr double max_double = std::numeric_limits<double>::max();
         const double half_longest = (0.5 * m_max - 0.5 * m_min).maxCoeff();
         const auto out_of_range = [&](double longest) {
-            return Invalid_input(internal::concat("normalization: the longest bounding-box side ", longest,
+            return Invalid_input(concat("normalization: the longest bounding-box side ", longest,
                                         " gives a scale factor outside the range of double"));
         };
         if (half_longest > max_double / 2.0) throw out_of_range(std::numeric_limits<double>::infinity());
@@ -104,7 +106,7 @@ private:
     std::size_t m_count = 0;
 };
 
-} // namespace detail
+} // namespace internal
 
 /// The normalization of doc/manual/sampling.md for the points in the columns of a 3 x N matrix:
 /// centre = bounding-box centre, scale = 2 / longest bounding-box side.
@@ -116,7 +118,7 @@ Similarity_3 compute_unit_cube_normalization(const Eigen::MatrixBase<Derived>& c
     if (coordinates.rows() != 3)
         throw Invalid_input(internal::concat("normalization: the coordinate matrix has ", coordinates.rows(),
                                              " rows, not 3"));
-    detail::Unit_cube_bbox bbox;
+    internal::Unit_cube_bbox bbox;
     for (Eigen::Index i = 0; i < coordinates.cols(); ++i)
         bbox.add(double(coordinates(0, i)), double(coordinates(1, i)), double(coordinates(2, i)));
     return bbox.normalization();
@@ -129,7 +131,7 @@ template <std::ranges::input_range Range, class PointMap = Identity_point_map<st
     requires ReadablePointMap<PointMap, std::ranges::range_value_t<Range>>
 Similarity_3 compute_unit_cube_normalization(const Range& items, const PointMap& point_map = PointMap())
 {
-    detail::Unit_cube_bbox bbox;
+    internal::Unit_cube_bbox bbox;
     for (const auto& item : items) {
         const auto& p = get(point_map, item);
         using P = std::remove_cvref_t<decltype(p)>;
@@ -150,4 +152,4 @@ Similarity_3 normalize_to_unit_cube(Eigen::Matrix<FT, 3, Eigen::Dynamic>& coordi
     return similarity;
 }
 
-} // namespace PCCD::testing
+} // namespace PCCD
