@@ -26,6 +26,10 @@
 #include <cstdio>
 #include <cstdlib>
 using namespace PCCD;
+using PCCD::testing::Plane_patch_shape;
+using PCCD::testing::Sphere_shape;
+using PCCD::testing::Surface_point;
+using PCCD::testing::Torus_shape;
 template <class Surface, class Shape>
 void measure(const char* label, const Surface& surf, const Shape& shape, double s)
 {

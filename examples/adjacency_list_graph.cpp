@@ -31,7 +31,7 @@ using Surface = PCCD::WLS_surface<Distance, PCCD::Gaussian_weight>;
 
 int main()
 {
-    const PCCD::Torus_shape torus(1.0, 0.4);
+    const PCCD::testing::Torus_shape torus(1.0, 0.4);
     PCCD::Random_engine engine(8);
     const Cloud cloud(torus.sample(6000, engine).points);
 

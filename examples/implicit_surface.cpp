@@ -8,7 +8,7 @@
 #include <optional>
 
 using Object = PCCD::Point_cloud_object<>; // Eigen_kernel<double>, geodesic kernel by default
-using Torus = PCCD::Torus_shape;
+using Torus = PCCD::testing::Torus_shape;
 using Vector = Eigen::Vector3d;
 
 int main()

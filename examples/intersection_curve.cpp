@@ -18,8 +18,8 @@
 
 using Object = PCCD::Point_cloud_object<>;
 using Pose = PCCD::Rigid_transform_3<double>;
-using Sphere = PCCD::Sphere_shape;
-using Torus = PCCD::Torus_shape;
+using Sphere = PCCD::testing::Sphere_shape;
+using Torus = PCCD::testing::Torus_shape;
 
 int main(int argc, char** argv)
 {

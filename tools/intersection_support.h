@@ -25,9 +25,9 @@
 
 namespace pccd_tool {
 
-using pccd_bench::Clock;
-using pccd_bench::ms_since;
-using pccd_bench::us_since;
+using PCCD::testing::Clock;
+using PCCD::testing::ms_since;
+using PCCD::testing::us_since;
 
 /// The methods of the --method option: the two leaf intersector policies, by their name().
 /// The names of --hierarchy (Intersection_options::traversal).

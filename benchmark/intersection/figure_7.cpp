@@ -15,6 +15,10 @@
 #include <vector>
 
 namespace pccd_bench::intersection {
+
+using PCCD::testing::mean;
+using PCCD::testing::open_csv;
+
 namespace {
 
 /// Interpolation_search with n = 20, 50, 100, 150, 200 and the default sample count (the covering

@@ -15,6 +15,9 @@
 
 namespace pccd_bench::intersection {
 
+using PCCD::testing::Clock;
+using PCCD::testing::ms_since;
+
 std::optional<PCCD::Triangle_mesh_data> read_bunny()
 {
     const std::filesystem::path path = std::filesystem::path(PCCD_DATA_DIR) / "bunny00.off";
