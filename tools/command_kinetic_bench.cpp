@@ -1,7 +1,7 @@
 // pccd kinetic-bench: plays a recorded scene (cloth falling on a table, deforming point cloud or
 // random linear motion) with the kinetic AABB tree, bottom-up refit and full rebuild at one query
 // rate, and prints BV updates, events and time per frame of each (doc/manual/kinetic.md, "When to
-// use which"; the scenes are benchmark/scenes/, target pccd_kinetic_scenes).
+// use which"; the scenes are PCCD/testing/scenes/, target PCCD::testing).
 // The queries per frame: the overlap with the scene's obstacle (the table; a range query for the
 // point scenes) unless --no-overlap, plus --rays N first-hit ray casts (cloth only; fixed rays, the
 // same for every method, see PCCD::testing::Kinetic_run_options::rays_per_frame). --given-positions hands
