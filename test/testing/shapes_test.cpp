@@ -1,4 +1,4 @@
-// The analytic shapes of PCCD/Sampling/ (Sphere_shape, Torus_shape, Plane_patch_shape,
+// The analytic test shapes of PCCD/testing/ (Sphere_shape, Torus_shape, Plane_patch_shape,
 // Parallel_sheets_shape; doc/manual/sampling.md), each against an independent truth: analytic
 // formulas, brute force over dense parametric grids, chi-square / Kolmogorov-Smirnov tests with fixed
 // seeds.
