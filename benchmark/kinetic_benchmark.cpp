@@ -135,18 +135,18 @@ int main(int argc, char** argv)
             constexpr PCCD::testing::Kinetic_method methods[] = {PCCD::testing::Kinetic_method::kinetic, PCCD::testing::Kinetic_method::bottom_up,
                                                         PCCD::testing::Kinetic_method::rebuild};
             if (rate == rates.front())
-                for (const auto m : methods) variants.push_back({PCCD::to_string(m) + "+self", m, false, true, false});
+                for (const auto m : methods) variants.push_back({PCCD::testing::to_string(m) + "+self", m, false, true, false});
             if (rays > 0)
-                for (const auto m : methods) variants.push_back({PCCD::to_string(m) + "+rays", m, false, false, true});
+                for (const auto m : methods) variants.push_back({PCCD::testing::to_string(m) + "+rays", m, false, false, true});
             // The frame's positions handed to the trees (advance_to(t, positions)), overlap and rays.
             for (const auto m : {PCCD::testing::Kinetic_method::kinetic, PCCD::testing::Kinetic_method::bottom_up}) {
-                variants.push_back({PCCD::to_string(m) + "+given", m, false, false, false, true});
-                if (rays > 0) variants.push_back({PCCD::to_string(m) + "+rays+given", m, false, false, true, true});
+                variants.push_back({PCCD::testing::to_string(m) + "+given", m, false, false, false, true});
+                if (rays > 0) variants.push_back({PCCD::testing::to_string(m) + "+rays+given", m, false, false, true, true});
             }
             for (const double f : boxes)
                 for (const auto m : {PCCD::testing::Kinetic_method::kinetic, PCCD::testing::Kinetic_method::bottom_up}) {
                     std::ostringstream name;
-                    name << PCCD::to_string(m) << "+box" << f;
+                    name << PCCD::testing::to_string(m) << "+box" << f;
                     variants.push_back({name.str(), m, false, false, false, false, f});
                 }
             for (const Variant& v : variants) {

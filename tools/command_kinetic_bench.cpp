@@ -150,7 +150,7 @@ void run_and_print(const PCCD::testing::Kinetic_scene<P>& scene, const Kinetic_b
     for (const auto method : {PCCD::testing::Kinetic_method::kinetic, PCCD::testing::Kinetic_method::bottom_up,
                               PCCD::testing::Kinetic_method::rebuild}) {
         const auto r = PCCD::testing::run_kinetic_scene(scene, method, options);
-        const std::string name = PCCD::to_string(method);
+        const std::string name = PCCD::testing::to_string(method);
         out["bv_updates"][name] = r.bv_updates;
         out["ms_per_frame"][name] = r.ms_per_frame;
         out["cpu_ms_per_frame"][name] = r.cpu_ms_per_frame;
