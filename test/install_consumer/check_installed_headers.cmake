@@ -2,6 +2,7 @@
 # headers of SOURCE_DIR/include (nothing of the proving ground testing/, namespace PCCD::testing, and
 # no test or benchmark helper), and that none of them includes a <PCCD/testing/...> header.
 #   cmake -DPCCD_BINARY_DIR=<build> -DPREFIX=<tmp> -DSOURCE_DIR=<source> -P check_installed_headers.cmake
+cmake_minimum_required(VERSION 3.22)
 file(REMOVE_RECURSE "${PREFIX}")
 execute_process(COMMAND ${CMAKE_COMMAND} --install "${PCCD_BINARY_DIR}" --prefix "${PREFIX}"
                 RESULT_VARIABLE rc OUTPUT_QUIET)
