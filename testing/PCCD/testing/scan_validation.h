@@ -197,7 +197,7 @@ struct Error_tally {
 
 /// The exact verdicts of the poses of one model (computed once, shared by every condition).
 struct Posed_truth {
-    PCCD::Benchmark_pose pose;
+    Benchmark_pose pose;
     PCCD::Exact_separation separation;
     PCCD::Pose_class cls;
 };
@@ -205,7 +205,7 @@ struct Posed_truth {
 inline std::vector<Posed_truth> exact_truth(const Scan_model& model, std::size_t rotations, std::uint64_t seed)
 {
     std::vector<Posed_truth> out;
-    for (const auto& pose : PCCD::generate_benchmark_poses({.rotations_per_distance = rotations, .seed = seed})) {
+    for (const auto& pose : generate_benchmark_poses({.rotations_per_distance = rotations, .seed = seed})) {
         const auto separation = PCCD::exact_separation(*model.exact, pose.pose_a, *model.exact, pose.pose_b);
         out.push_back({pose, separation, PCCD::classify_pose(separation, model.clean_r)});
     }
