@@ -16,18 +16,18 @@
 // <m>_false_positives (non-grazing poses), <m>_grazing_false_negatives, <m>_grazing_false_positives.
 #include "collision_baselines.h"
 
-#include <common/csv.h>
-#include <common/statistics.h>
-#include <common/timing.h>
+#include <PCCD/testing/csv.h>
+#include <PCCD/testing/statistics.h>
+#include <PCCD/testing/timing.h>
 
 #include <PCCD/Exact/Exact_mesh.h>
 #include <PCCD/Exact/mesh_separation.h>
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Point_cloud.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Similarity_3.h>
-#include <PCCD/Sampling/pose_generator.h>
-#include <PCCD/Sampling/sample_triangle_mesh.h>
+#include <PCCD/Similarity_3.h>
+#include <PCCD/testing/pose_generator.h>
+#include <PCCD/sample_triangle_mesh.h>
 #include <PCCD/sampling_radius.h>
 
 #include <algorithm>
@@ -45,11 +45,11 @@
 
 namespace {
 
-using pccd_bench::Clock;
-using pccd_bench::mean;
-using pccd_bench::median;
-using pccd_bench::ms_since;
-using pccd_bench::us_since;
+using PCCD::testing::Clock;
+using PCCD::testing::mean;
+using PCCD::testing::median;
+using PCCD::testing::ms_since;
+using PCCD::testing::us_since;
 
 struct Arguments {
     std::size_t points = 30000;
@@ -161,11 +161,11 @@ try {
     std::printf("preprocessing: Exact_mesh %.0f ms, FCL OBBRSS BVH %.0f ms (%zu nodes), kd-tree %.0f ms\n", exact_ms,
                 fcl_ms, fcl.number_of_nodes(), kd_ms);
 
-    const std::vector<PCCD::Benchmark_pose> poses = PCCD::generate_benchmark_poses(
-        PCCD::Pose_options{.rotations_per_distance = args.rotations, .seed = args.seed});
+    const std::vector<PCCD::testing::Benchmark_pose> poses = PCCD::testing::generate_benchmark_poses(
+        PCCD::testing::Pose_options{.rotations_per_distance = args.rotations, .seed = args.seed});
     std::vector<Distance_figures> rows;
     double exact_total_ms = 0.0;
-    for (const PCCD::Benchmark_pose& pose : poses) {
+    for (const PCCD::testing::Benchmark_pose& pose : poses) {
         if (rows.empty() || rows.back().distance != pose.distance) {
             rows.emplace_back();
             rows.back().distance = pose.distance;
@@ -216,7 +216,7 @@ try {
     std::printf(".\n");
 
     if (!args.csv.empty()) {
-        std::ofstream out = pccd_bench::open_csv(args.csv);
+        std::ofstream out = PCCD::testing::open_csv(args.csv);
         out << "distance,poses,exact_colliding,grazing,grazing_exact_colliding";
         for (const char* name : method_names)
             out << ',' << name << "_mean_us," << name << "_median_us," << name << "_false_negatives," << name

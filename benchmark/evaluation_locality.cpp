@@ -11,11 +11,11 @@
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Similarity_3.h>
-#include <PCCD/Sampling/sample_triangle_mesh.h>
+#include <PCCD/Similarity_3.h>
+#include <PCCD/sample_triangle_mesh.h>
 #include <PCCD/internal/spatial_order.h>
 
-#include <common/timing.h>
+#include <PCCD/testing/timing.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -34,12 +34,12 @@ double microseconds_per_evaluation(const Object& object, const std::vector<Eigen
     double best = 1e300;
     for (int pass = 0; pass < 5; ++pass) {
         double sum = 0.0;
-        const auto start = pccd_bench::Clock::now();
+        const auto start = PCCD::testing::Clock::now();
         for (const Eigen::Vector3d& x : xs) {
             const PCCD::Surface_evaluation e = object.surface().evaluate(x);
             sum += e.defined() ? e.value : 0.0;
         }
-        best = std::min(best, 1e3 * pccd_bench::ms_since(start) / double(xs.size()));
+        best = std::min(best, 1e3 * PCCD::testing::ms_since(start) / double(xs.size()));
         checksum += sum;
     }
     return best;

@@ -20,12 +20,12 @@
 #include <PCCD/Proximity_graph/knn_graph.h>
 #include <PCCD/Proximity_graph/sphere_of_influence_graph.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Torus_shape.h>
-#include <PCCD/Sampling/Similarity_3.h>
-#include <PCCD/Sampling/sample_triangle_mesh.h>
+#include <PCCD/testing/Torus_shape.h>
+#include <PCCD/Similarity_3.h>
+#include <PCCD/sample_triangle_mesh.h>
 #include <PCCD/sampling_radius.h>
 
-#include <common/timing.h>
+#include <PCCD/testing/timing.h>
 
 #include <algorithm>
 #include <chrono>
@@ -42,8 +42,8 @@
 
 namespace {
 
-using pccd_bench::Clock;
-using pccd_bench::ms_since;
+using PCCD::testing::Clock;
+using PCCD::testing::ms_since;
 
 /// CPU time of the whole process (all threads), in ms: on a shared machine it is the figure that
 /// other processes' load does not inflate.
@@ -133,7 +133,7 @@ Eigen::Matrix3Xd sample(const Model& model, std::size_t n, std::uint64_t seed, d
 {
     PCCD::Random_engine engine(seed);
     if (model.mesh.triangles.empty())
-        return PCCD::Torus_shape(0.7, 0.3).sample(n, engine, {.noise_sigma = noise_sigma}).points;
+        return PCCD::testing::Torus_shape(0.7, 0.3).sample(n, engine, {.noise_sigma = noise_sigma}).points;
     return PCCD::sample_triangle_mesh(model.mesh.vertices, model.mesh.triangles, n, engine,
                                       {.noise_sigma = noise_sigma})
         .points;

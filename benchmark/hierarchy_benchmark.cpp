@@ -18,17 +18,17 @@
 // FCL's, p99, and how often each traversal's verdict differs from the flat traversal's and from FCL's.
 #include "collision_baselines.h"
 
-#include <common/csv.h>
-#include <common/statistics.h>
-#include <common/timing.h>
+#include <PCCD/testing/csv.h>
+#include <PCCD/testing/statistics.h>
+#include <PCCD/testing/timing.h>
 
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Similarity_3.h>
-#include <PCCD/Sampling/pose_generator.h>
-#include <PCCD/Sampling/sample_triangle_mesh.h>
+#include <PCCD/Similarity_3.h>
+#include <PCCD/testing/pose_generator.h>
+#include <PCCD/sample_triangle_mesh.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -123,7 +123,7 @@ auto timed(int repetitions, const Run& run)
         result = run();
         times.push_back(thread_cpu_us() - start);
     }
-    return std::pair{result, pccd_bench::median(times)};
+    return std::pair{result, PCCD::testing::median(times)};
 }
 
 struct Series {
@@ -136,12 +136,12 @@ struct Series {
 double p99(std::vector<double> v)
 {
     std::sort(v.begin(), v.end());
-    return pccd_bench::sorted_quantile(v, 99);
+    return PCCD::testing::sorted_quantile(v, 99);
 }
 
 /// The budget sweep: per budget and distance, counts of poses, undecided and wrong answers.
 void run_budgets(const std::string& name, const PCCD::Point_cloud_object<>& object,
-                 const PCCD::benchmark::Fcl_mesh_baseline& fcl, const std::vector<PCCD::Benchmark_pose>& poses,
+                 const PCCD::benchmark::Fcl_mesh_baseline& fcl, const std::vector<PCCD::testing::Benchmark_pose>& poses,
                  const Arguments& args, std::ofstream* csv)
 {
     struct Tally {
@@ -200,9 +200,9 @@ void run_model(const std::string& name, const Arguments& args, std::ofstream* cs
         PCCD::sample_triangle_mesh(mesh.vertices, mesh.triangles, args.points, engine);
     std::vector<Eigen::Vector3d> points(std::size_t(sample.points.cols()));
     for (Eigen::Index i = 0; i < sample.points.cols(); ++i) points[std::size_t(i)] = sample.points.col(i);
-    const auto start = pccd_bench::Clock::now();
+    const auto start = PCCD::testing::Clock::now();
     const PCCD::Point_cloud_object<> object(points, {.hierarchy = {.volume = volume_of(args.volumes.front())}});
-    const double preprocess_ms = pccd_bench::ms_since(start);
+    const double preprocess_ms = PCCD::testing::ms_since(start);
     // The same cloud with each further bounding volume (the first is `object`).
     std::map<std::string, PCCD::Point_cloud_object<>> with_volume;
     for (std::size_t k = 1; k < args.volumes.size(); ++k)
@@ -217,7 +217,7 @@ void run_model(const std::string& name, const Arguments& args, std::ofstream* cs
 
     std::vector<double> distances;
     for (int k = 0; k <= 12; ++k) distances.push_back(0.25 * k);
-    const auto poses = PCCD::generate_benchmark_poses(
+    const auto poses = PCCD::testing::generate_benchmark_poses(
         {.distances = distances, .rotations_per_distance = args.rotations, .seed = args.seed});
     if (!args.budgets.empty()) {
         run_budgets(name, object, fcl, poses, args, budget_csv);
@@ -269,18 +269,18 @@ void run_model(const std::string& name, const Arguments& args, std::ofstream* cs
         std::printf("%-12.2f", d);
         for (const auto& m : methods) {
             const auto& v = series[m].by_distance[d];
-            std::printf(" %13.1f / %6.1f", pccd_bench::mean(v), pccd_bench::median(v));
+            std::printf(" %13.1f / %6.1f", PCCD::testing::mean(v), PCCD::testing::median(v));
         }
         std::printf("\n");
     }
-    const double fcl_all = pccd_bench::mean(series["fcl"].all), fcl_near = pccd_bench::mean(series["fcl"].near);
+    const double fcl_all = PCCD::testing::mean(series["fcl"].all), fcl_near = PCCD::testing::mean(series["fcl"].near);
     std::printf("%-20s %10s %10s %8s %10s %8s %8s %9s %9s %8s\n", "method", "mean_us", "median_us", "/fcl", "near_us",
                 "/fcl", "p99_us", "!=flat", "!=fcl", "mean_f");
     for (const auto& m : methods) {
         const Series& s = series[m];
-        const double all = pccd_bench::mean(s.all), near = pccd_bench::mean(s.near);
+        const double all = PCCD::testing::mean(s.all), near = PCCD::testing::mean(s.near);
         std::printf("%-20s %10.1f %10.1f %8.2f %10.1f %8.2f %8.1f %9zu %9zu %8.1f\n", m.c_str(), all,
-                    pccd_bench::median(s.all), all / fcl_all, near, near / fcl_near, p99(s.all), s.differs_flat,
+                    PCCD::testing::median(s.all), all / fcl_all, near, near / fcl_near, p99(s.all), s.differs_flat,
                     s.differs_fcl, s.f_evaluations / double(s.all.size()));
     }
     std::fflush(stdout);
@@ -298,12 +298,12 @@ int main(int argc, char** argv)
                     args.points, args.rotations, (unsigned long long)args.seed, args.repetitions);
         std::ofstream csv;
         if (!args.csv.empty()) {
-            csv = pccd_bench::open_csv(args.csv);
+            csv = PCCD::testing::open_csv(args.csv);
             csv << "model,method,distance,rotation,intersects,cpu_us,f_evaluations,node_pairs,leaf_pairs\n";
         }
         std::ofstream budget_csv;
         if (!args.budget_csv.empty()) {
-            budget_csv = pccd_bench::open_csv(args.budget_csv);
+            budget_csv = PCCD::testing::open_csv(args.budget_csv);
             budget_csv << "model,budget_us,distance,poses,undecided,wrong\n";
         }
         for (const auto& model : args.models)

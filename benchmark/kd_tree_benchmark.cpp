@@ -13,8 +13,8 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/property_map.h>
 
-#include <common/statistics.h>
-#include <common/timing.h>
+#include <PCCD/testing/statistics.h>
+#include <PCCD/testing/timing.h>
 
 #include <algorithm>
 #include <chrono>
@@ -27,9 +27,9 @@
 namespace {
 
 using Coordinates = Eigen::Matrix<double, 3, Eigen::Dynamic>;
-using pccd_bench::Clock;
-using pccd_bench::seconds_since;
-using pccd_bench::upper_median;
+using PCCD::testing::Clock;
+using PCCD::testing::seconds_since;
+using PCCD::testing::upper_median;
 
 Coordinates make_points(const std::string& kind, int n, PCCD::Random_engine& rng)
 {

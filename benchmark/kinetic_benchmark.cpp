@@ -29,11 +29,11 @@
 // either side of the middle of its +x edge, from 0.3 below to 0.1 above the top, so the answer is a
 // smaller part of the cloth than the table overlap's (f = 0.25: about 4 %, 1: about a third at
 // 6,890 triangles); the query's footprint is what decides between the trees.
-#include <scenes/Cloth_scene.h>
-#include <scenes/run_kinetic_scene.h>
+#include <PCCD/testing/scenes/Cloth_scene.h>
+#include <PCCD/testing/scenes/run_kinetic_scene.h>
 
-#include <common/statistics.h>
-#include <common/timing.h>
+#include <PCCD/testing/statistics.h>
+#include <PCCD/testing/timing.h>
 
 #include <algorithm>
 #include <chrono>
@@ -57,10 +57,10 @@ std::vector<double> parse_list(const std::string& text)
     return values;
 }
 
-using pccd_bench::median;
+using PCCD::testing::median;
 
 /// The box of a "+box<f>" method (see the header comment); none for f <= 0.
-std::optional<Eigen::AlignedBox3d> box_over_table_edge(const PCCD::Kinetic_scene<PCCD::Kinetic_triangle>& scene,
+std::optional<Eigen::AlignedBox3d> box_over_table_edge(const PCCD::testing::Kinetic_scene<PCCD::Kinetic_triangle>& scene,
                                                        double f)
 {
     if (!(f > 0.0)) return std::nullopt;
@@ -114,13 +114,13 @@ int main(int argc, char** argv)
     std::cout << std::fixed << std::setprecision(3);
     for (const double size : sizes) {
         const auto sim_start = std::chrono::steady_clock::now();
-        const auto scene = PCCD::make_cloth_scene({.triangles = std::size_t(size)});
-        const double sim_s = pccd_bench::seconds_since(sim_start);
+        const auto scene = PCCD::testing::make_cloth_scene({.triangles = std::size_t(size)});
+        const double sim_s = PCCD::testing::seconds_since(sim_start);
         std::cout << "cloth: " << scene.primitives.size() << " triangles, " << scene.flightplans.size() << " vertices, "
                   << scene.end_time << " s recorded in " << sim_s << " s of simulation\n";
         struct Variant {
             std::string name;
-            PCCD::Kinetic_method method;
+            PCCD::testing::Kinetic_method method;
             bool four_ary_heap;
             bool self;
             bool rays;
@@ -128,30 +128,30 @@ int main(int argc, char** argv)
             double box = 0.0; // > 0: a range query with the box of that fraction instead of the overlap
         };
         for (const double rate : rates) {
-            std::vector<Variant> variants{{"kinetic", PCCD::Kinetic_method::kinetic, false, false, false},
-                                          {"bottom_up", PCCD::Kinetic_method::bottom_up, false, false, false},
-                                          {"rebuild", PCCD::Kinetic_method::rebuild, false, false, false},
-                                          {"kinetic_4ary_heap", PCCD::Kinetic_method::kinetic, true, false, false}};
-            constexpr PCCD::Kinetic_method methods[] = {PCCD::Kinetic_method::kinetic, PCCD::Kinetic_method::bottom_up,
-                                                        PCCD::Kinetic_method::rebuild};
+            std::vector<Variant> variants{{"kinetic", PCCD::testing::Kinetic_method::kinetic, false, false, false},
+                                          {"bottom_up", PCCD::testing::Kinetic_method::bottom_up, false, false, false},
+                                          {"rebuild", PCCD::testing::Kinetic_method::rebuild, false, false, false},
+                                          {"kinetic_4ary_heap", PCCD::testing::Kinetic_method::kinetic, true, false, false}};
+            constexpr PCCD::testing::Kinetic_method methods[] = {PCCD::testing::Kinetic_method::kinetic, PCCD::testing::Kinetic_method::bottom_up,
+                                                        PCCD::testing::Kinetic_method::rebuild};
             if (rate == rates.front())
-                for (const auto m : methods) variants.push_back({PCCD::to_string(m) + "+self", m, false, true, false});
+                for (const auto m : methods) variants.push_back({PCCD::testing::to_string(m) + "+self", m, false, true, false});
             if (rays > 0)
-                for (const auto m : methods) variants.push_back({PCCD::to_string(m) + "+rays", m, false, false, true});
+                for (const auto m : methods) variants.push_back({PCCD::testing::to_string(m) + "+rays", m, false, false, true});
             // The frame's positions handed to the trees (advance_to(t, positions)), overlap and rays.
-            for (const auto m : {PCCD::Kinetic_method::kinetic, PCCD::Kinetic_method::bottom_up}) {
-                variants.push_back({PCCD::to_string(m) + "+given", m, false, false, false, true});
-                if (rays > 0) variants.push_back({PCCD::to_string(m) + "+rays+given", m, false, false, true, true});
+            for (const auto m : {PCCD::testing::Kinetic_method::kinetic, PCCD::testing::Kinetic_method::bottom_up}) {
+                variants.push_back({PCCD::testing::to_string(m) + "+given", m, false, false, false, true});
+                if (rays > 0) variants.push_back({PCCD::testing::to_string(m) + "+rays+given", m, false, false, true, true});
             }
             for (const double f : boxes)
-                for (const auto m : {PCCD::Kinetic_method::kinetic, PCCD::Kinetic_method::bottom_up}) {
+                for (const auto m : {PCCD::testing::Kinetic_method::kinetic, PCCD::testing::Kinetic_method::bottom_up}) {
                     std::ostringstream name;
-                    name << PCCD::to_string(m) << "+box" << f;
+                    name << PCCD::testing::to_string(m) << "+box" << f;
                     variants.push_back({name.str(), m, false, false, false, false, f});
                 }
             for (const Variant& v : variants) {
                 if (!only.empty() && std::find(only.begin(), only.end(), v.name) == only.end()) continue;
-                const PCCD::Kinetic_run_options options{.query_hz = rate,
+                const PCCD::testing::Kinetic_run_options options{.query_hz = rate,
                                                         .overlap_query = !v.rays,
                                                         .self_overlap_query = v.self,
                                                         .rays_per_frame = v.rays ? rays : 0,
@@ -159,12 +159,12 @@ int main(int argc, char** argv)
                                                         .query_box = box_over_table_edge(scene, v.box),
                                                         .warm_up = warm_up};
                 std::vector<double> times, updates, queries, cpu_times, cpu_updates, cpu_queries;
-                PCCD::Kinetic_run_result first;
+                PCCD::testing::Kinetic_run_result first;
                 for (int r = 0; r < repeats; ++r) {
                     const auto result = v.four_ary_heap
-                                            ? PCCD::run_kinetic_scene<PCCD::Kinetic_triangle, PCCD::Event_queue<4>>(
+                                            ? PCCD::testing::run_kinetic_scene<PCCD::Kinetic_triangle, PCCD::Event_queue<4>>(
                                                   scene, v.method, options)
-                                            : PCCD::run_kinetic_scene(scene, v.method, options);
+                                            : PCCD::testing::run_kinetic_scene(scene, v.method, options);
                     if (r == 0) first = result;
                     times.push_back(result.ms_per_frame);
                     updates.push_back(result.update_ms_per_frame);
@@ -180,12 +180,12 @@ int main(int argc, char** argv)
                     << median(updates) << ',' << median(queries) << ',' << med
                     << ',' << *std::min_element(times.begin(), times.end()) << ','
                     << *std::max_element(times.begin(), times.end()) << ',' << repeats << ','
-                    << (v.method == PCCD::Kinetic_method::kinetic ? first.node_updates : first.bv_updates) << ','
+                    << (v.method == PCCD::testing::Kinetic_method::kinetic ? first.node_updates : first.bv_updates) << ','
                     << median(cpu_updates) << ',' << median(cpu_queries) << ',' << median(cpu_times) << ','
                     << first.certificate_reuses << '\n';
                 std::cout << "  " << std::setw(5) << rate << " Hz " << std::setw(22) << v.name << "  bv_updates "
                           << std::setw(9) << first.bv_updates << "  node_updates " << std::setw(9)
-                          << (v.method == PCCD::Kinetic_method::kinetic ? first.node_updates : first.bv_updates)
+                          << (v.method == PCCD::testing::Kinetic_method::kinetic ? first.node_updates : first.bv_updates)
                           << "  events " << std::setw(8) << first.events
                           << "  build " << std::setw(8) << first.build_ms << " ms  per frame (median): update "
                           << median(updates) << " + queries " << median(queries) << " = " << med << " ms (CPU "

@@ -3,7 +3,7 @@
 // changed at a time, and the point-level evidence is counted. Prints one line per missed pose and a
 // tally of causes (doc/benchmarks.md "Missed contacts: causes").
 //   build/benchmark/miss_causes --models anchor.off part.off --points 500 --rotations 20
-#include "../test/validation/scan_validation.h"
+#include <PCCD/testing/scan_validation.h>
 
 #include <CLI/CLI.hpp>
 
@@ -55,17 +55,17 @@ int main(int argc, char** argv)
     app.add_flag("--cad", cad, "the conditions of the CAD validation (clean, noise 0.3, 0.6, 1 % outliers)");
     app.add_flag("--rst", rst, "analyse the misses of RST instead of the interpolation search");
     CLI11_PARSE(app, argc, argv);
-    const auto all = cad ? pccd_test::cad_conditions() : pccd_test::scan_conditions();
+    const auto all = cad ? PCCD::testing::cad_conditions() : PCCD::testing::scan_conditions();
     if (conditions.empty())
         for (std::size_t i = 0; i < all.size(); ++i) conditions.push_back(i);
     std::map<std::string, std::size_t> tally;
     std::size_t misses = 0;
     for (const std::string& file : models) {
-        const pccd_test::Scan_model model = pccd_test::load_scan_model(data_dir, file, points, 2026);
-        const auto truth = pccd_test::exact_truth(model, rotations, 1);
+        const PCCD::testing::Scan_model model = PCCD::testing::load_scan_model(data_dir, file, points, 2026);
+        const auto truth = PCCD::testing::exact_truth(model, rotations, 1);
         for (std::size_t c : conditions) {
             const auto& condition = all.at(c);
-            const pccd_test::Scan_cloud cloud = pccd_test::make_scan_cloud(model, condition, 2026 + c);
+            const PCCD::testing::Scan_cloud cloud = PCCD::testing::make_scan_cloud(model, condition, 2026 + c);
             const auto& o = *cloud.object;
             std::size_t k = 0;
             for (const auto& t : truth) {

@@ -7,7 +7,7 @@
 // table of "Missed contacts" (CAD and mechanical parts at four densities) from
 //   build/benchmark/scan_accuracy --cad --rotations 50
 // (test_cad_validation runs it with fewer poses and models).
-#include "../test/validation/scan_validation.h"
+#include <PCCD/testing/scan_validation.h>
 
 #include <CLI/CLI.hpp>
 
@@ -47,7 +47,7 @@ int main(int argc, char** argv)
     app.add_option("--contact-core", query_options.contact_core, "fraction of the domain a contact must lie within");
     app.add_option("--contact-tolerance", tolerance, "verification tolerance in sampling radii (default: automatic)");
     bool no_domain = false, no_verify = false, cad = false, no_certify = false;
-    std::vector<std::size_t> densities = pccd_test::cad_densities();
+    std::vector<std::size_t> densities = PCCD::testing::cad_densities();
     app.add_flag("--cad", cad, "CAD and mechanical parts at four densities (clean, noise 0.3, 0.6, 1 % outliers)");
     app.add_option("--densities", densities, "with --cad: points per clean cloud");
     app.add_flag("--no-certify", no_certify, "answer separate without the certification pass");
@@ -63,29 +63,29 @@ int main(int argc, char** argv)
     query_options.verify_contacts = !no_verify;
     query_options.certify_separation = !no_certify;
     if (cad) {
-        if (app.count("--models") == 0) models = pccd_test::cad_models();
-        const auto cad_conditions = pccd_test::cad_conditions();
-        std::map<std::string, pccd_test::Scan_row> totals;
+        if (app.count("--models") == 0) models = PCCD::testing::cad_models();
+        const auto cad_conditions = PCCD::testing::cad_conditions();
+        std::map<std::string, PCCD::testing::Scan_row> totals;
         for (const std::string& file : models) {
-            pccd_test::Scan_model model = pccd_test::load_scan_model(data_dir, file, densities.front(), 2026);
-            const auto separations = pccd_test::exact_truth(model, rotations, pose_seed);
+            PCCD::testing::Scan_model model = PCCD::testing::load_scan_model(data_dir, file, densities.front(), 2026);
+            const auto separations = PCCD::testing::exact_truth(model, rotations, pose_seed);
             for (std::size_t density : densities) {
-                pccd_test::set_density(model, density, 2026);
-                const auto truth = pccd_test::reclassify(separations, model.clean_r);
+                PCCD::testing::set_density(model, density, 2026);
+                const auto truth = PCCD::testing::reclassify(separations, model.clean_r);
                 for (std::size_t c = 0; c < cad_conditions.size(); ++c) {
                     if (!conditions.empty() && std::find(conditions.begin(), conditions.end(), c) == conditions.end())
                         continue;
-                    const auto cloud = pccd_test::make_scan_cloud(model, cad_conditions[c], 2026 + c, object_options);
-                    auto row = pccd_test::evaluate_first_hits(model, cad_conditions[c], cloud, truth, verbose, query_options);
+                    const auto cloud = PCCD::testing::make_scan_cloud(model, cad_conditions[c], 2026 + c, object_options);
+                    auto row = PCCD::testing::evaluate_first_hits(model, cad_conditions[c], cloud, truth, verbose, query_options);
                     row.condition = std::to_string(density) + " " + cad_conditions[c].name;
-                    pccd_test::print_scan_row(row);
-                    pccd_test::add_to(totals[row.condition], row);
+                    PCCD::testing::print_scan_row(row);
+                    PCCD::testing::add_to(totals[row.condition], row);
                     std::fflush(stdout);
                 }
             }
         }
         std::printf("\nper density and condition, %zu models, %zu rotations x 13 distances each\n", models.size(), rotations);
-        pccd_test::print_scan_table_header();
+        PCCD::testing::print_scan_table_header();
         for (std::size_t density : densities)
             for (std::size_t c = 0; c < cad_conditions.size(); ++c) {
                 const std::string name = std::to_string(density) + " " + cad_conditions[c].name;
@@ -93,30 +93,30 @@ int main(int argc, char** argv)
                 auto& t = totals[name];
                 t.model = "all";
                 t.condition = name;
-                pccd_test::print_scan_row(t);
+                PCCD::testing::print_scan_row(t);
             }
         return 0;
     }
-    const auto all = pccd_test::scan_conditions();
+    const auto all = PCCD::testing::scan_conditions();
     if (conditions.empty())
         for (std::size_t i = 0; i < all.size(); ++i) conditions.push_back(i);
 
-    std::vector<pccd_test::Scan_row> rows;
+    std::vector<PCCD::testing::Scan_row> rows;
     std::vector<std::string> curve_lines;
     for (const std::string& file : models) {
-        const pccd_test::Scan_model model = pccd_test::load_scan_model(data_dir, file, points, 2026);
-        const auto truth = pccd_test::exact_truth(model, rotations, pose_seed);
+        const PCCD::testing::Scan_model model = PCCD::testing::load_scan_model(data_dir, file, points, 2026);
+        const auto truth = PCCD::testing::exact_truth(model, rotations, pose_seed);
         if (tolerance > 0.0) query_options.contact_tolerance = tolerance * model.clean_r;
         std::printf("%s: clean spacing %.5f, r %.5f, %zu poses\n", file.c_str(), model.clean_spacing, model.clean_r,
                     truth.size());
         for (std::size_t c : conditions) {
-            const pccd_test::Scan_condition& condition = all.at(c);
-            const pccd_test::Scan_cloud cloud = pccd_test::make_scan_cloud(model, condition, 2026 + c, object_options);
-            rows.push_back(pccd_test::evaluate_first_hits(model, condition, cloud, truth, verbose, query_options));
-            pccd_test::print_scan_table_header();
-            pccd_test::print_scan_row(rows.back());
+            const PCCD::testing::Scan_condition& condition = all.at(c);
+            const PCCD::testing::Scan_cloud cloud = PCCD::testing::make_scan_cloud(model, condition, 2026 + c, object_options);
+            rows.push_back(PCCD::testing::evaluate_first_hits(model, condition, cloud, truth, verbose, query_options));
+            PCCD::testing::print_scan_table_header();
+            PCCD::testing::print_scan_row(rows.back());
             if (curve_poses > 0) {
-                const auto f = pccd_test::evaluate_curves(model, cloud, truth, curve_poses, query_options);
+                const auto f = PCCD::testing::evaluate_curves(model, cloud, truth, curve_poses, query_options);
                 char line[256];
                 std::snprintf(line, sizeof line,
                               "%-14s %-24s curves: %zu poses, %zu points, distance median %.3f p95 %.3f max %.3f "
@@ -130,8 +130,8 @@ int main(int argc, char** argv)
         }
     }
     std::printf("\nsummary (%zu rotations x 13 distances per model)\n", rotations);
-    pccd_test::print_scan_table_header();
-    for (const auto& r : rows) pccd_test::print_scan_row(r);
+    PCCD::testing::print_scan_table_header();
+    for (const auto& r : rows) PCCD::testing::print_scan_row(r);
     for (const auto& l : curve_lines) std::printf("%s\n", l.c_str());
     return 0;
 }

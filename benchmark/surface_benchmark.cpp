@@ -13,10 +13,10 @@
 // default Point_cloud_object options (r-SIG, eta = 3, theta_eps = 1e-2).
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Proximity_graph/internal/graph_construction.h>
-#include <PCCD/Sampling/Sphere_shape.h>
+#include <PCCD/testing/Sphere_shape.h>
 
-#include <common/statistics.h>
-#include <common/timing.h>
+#include <PCCD/testing/statistics.h>
+#include <PCCD/testing/timing.h>
 
 #include <algorithm>
 #include <chrono>
@@ -28,8 +28,8 @@
 
 namespace {
 
-using pccd_bench::Clock;
-using pccd_bench::seconds_since;
+using PCCD::testing::Clock;
+using PCCD::testing::seconds_since;
 
 template <class Evaluate>
 double median_rate(std::size_t count, int repetitions, const Evaluate& evaluate, double& checksum)
@@ -42,7 +42,7 @@ double median_rate(std::size_t count, int repetitions, const Evaluate& evaluate,
         rates.push_back(double(count) / seconds_since(start));
         checksum = sum;
     }
-    return pccd_bench::upper_median(std::move(rates));
+    return PCCD::testing::upper_median(std::move(rates));
 }
 
 // The value, or 0 where undefined (so that the loop cannot be optimized away).
@@ -56,7 +56,7 @@ int main(int argc, char** argv)
     const std::size_t evaluations = argc > 2 ? std::size_t(std::atoll(argv[2])) : 200000;
     const int repetitions = argc > 3 ? std::atoi(argv[3]) : 5;
 
-    const PCCD::Sphere_shape sphere(Eigen::Vector3d::Zero(), 1.0);
+    const PCCD::testing::Sphere_shape sphere(Eigen::Vector3d::Zero(), 1.0);
     PCCD::Random_engine engine(1);
     const double spacing = 0.5 * std::sqrt(sphere.area() / double(n));
     const auto sample = sphere.sample(n, engine, {.noise_sigma = 0.1 * spacing});
@@ -80,7 +80,7 @@ int main(int argc, char** argv)
     const double s = object.cloud().mean_spacing();
     for (std::size_t k = 0; k < evaluations; ++k) {
         indices[k] = std::uint32_t(PCCD::uniform_index(engine, n));
-        const PCCD::Surface_point p = sphere.random_point(engine);
+        const PCCD::testing::Surface_point p = sphere.random_point(engine);
         arbitrary[k] = p.position + PCCD::uniform_real(engine, -2 * s, 2 * s) * p.normal;
     }
 

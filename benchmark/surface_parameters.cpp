@@ -11,9 +11,9 @@
 // right).
 #include <PCCD/Point_cloud.h>
 #include <PCCD/sampling_radius.h>
-#include <PCCD/Sampling/Sphere_shape.h>
-#include <PCCD/Sampling/Torus_shape.h>
-#include <PCCD/Sampling/Plane_patch_shape.h>
+#include <PCCD/testing/Sphere_shape.h>
+#include <PCCD/testing/Torus_shape.h>
+#include <PCCD/testing/Plane_patch_shape.h>
 #include <PCCD/Proximity_graph/sphere_of_influence_graph.h>
 #include <PCCD/Geodesic/Close_pairs_shortest_paths.h>
 #include <PCCD/Surface/Euclidean_distance.h>
@@ -26,6 +26,10 @@
 #include <cstdio>
 #include <cstdlib>
 using namespace PCCD;
+using PCCD::testing::Plane_patch_shape;
+using PCCD::testing::Sphere_shape;
+using PCCD::testing::Surface_point;
+using PCCD::testing::Torus_shape;
 template <class Surface, class Shape>
 void measure(const char* label, const Surface& surf, const Shape& shape, double s)
 {

@@ -5,7 +5,7 @@
 // compared with the torus' exact signed distance.
 #include <PCCD/Geodesic/Close_pairs_shortest_paths.h>
 #include <PCCD/Point_cloud.h>
-#include <PCCD/Sampling/Torus_shape.h>
+#include <PCCD/testing/Torus_shape.h>
 #include <PCCD/Surface/Gaussian_weight.h>
 #include <PCCD/Surface/Geodesic_distance.h>
 #include <PCCD/Surface/WLS_surface.h>
@@ -31,7 +31,7 @@ using Surface = PCCD::WLS_surface<Distance, PCCD::Gaussian_weight>;
 
 int main()
 {
-    const PCCD::Torus_shape torus(1.0, 0.4);
+    const PCCD::testing::Torus_shape torus(1.0, 0.4);
     PCCD::Random_engine engine(8);
     const Cloud cloud(torus.sample(6000, engine).points);
 

@@ -6,9 +6,9 @@
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/Similarity_3.h>
-#include <PCCD/Sampling/Torus_shape.h>
-#include <PCCD/Sampling/sample_triangle_mesh.h>
+#include <PCCD/Similarity_3.h>
+#include <PCCD/testing/Torus_shape.h>
+#include <PCCD/sample_triangle_mesh.h>
 
 #include <Eigen/Geometry>
 
@@ -27,7 +27,7 @@ Eigen::Matrix3Xd scan(std::size_t n, std::uint64_t seed)
     const char* env = std::getenv("PCCD_DATA_DIR");
     const std::filesystem::path bunny = std::filesystem::path(env && *env ? env : PCCD_DATA_DIR) / "bunny00.off";
     PCCD::Random_engine engine(seed);
-    if (!std::filesystem::exists(bunny)) return PCCD::Torus_shape(0.7, 0.3).sample(n, engine).points;
+    if (!std::filesystem::exists(bunny)) return PCCD::testing::Torus_shape(0.7, 0.3).sample(n, engine).points;
     PCCD::Triangle_mesh_data mesh = PCCD::IO::read_triangle_mesh(bunny.string());
     const PCCD::Similarity_3 to_unit_cube = PCCD::compute_unit_cube_normalization(mesh.vertices);
     for (Vector& v : mesh.vertices) v = to_unit_cube.transform_point(v);

@@ -6,8 +6,8 @@
 #include <PCCD/Kinetic/Deforming_point_cloud_object.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Plane_patch_shape.h>
-#include <PCCD/Sampling/Sphere_shape.h>
+#include <PCCD/testing/Plane_patch_shape.h>
+#include <PCCD/testing/Sphere_shape.h>
 
 #include <cmath>
 #include <iostream>
@@ -18,11 +18,11 @@ int main()
 {
     PCCD::Random_engine engine(7);
     // The deforming cloud at rest: 3000 points on a unit sphere.
-    const Eigen::Matrix3Xd rest = PCCD::Sphere_shape(Eigen::Vector3d::Zero(), 1.0).sample(3000, engine).points;
+    const Eigen::Matrix3Xd rest = PCCD::testing::Sphere_shape(Eigen::Vector3d::Zero(), 1.0).sample(3000, engine).points;
     PCCD::Deforming_point_cloud_object<> ball(rest); // the whole preprocessing, once
 
     // The rigid floor: a 4 x 4 patch at z = -1.1.
-    const PCCD::Plane_patch_shape patch({-2.0, -2.0, -1.1}, {4.0, 0.0, 0.0}, {0.0, 4.0, 0.0});
+    const PCCD::testing::Plane_patch_shape patch({-2.0, -2.0, -1.1}, {4.0, 0.0, 0.0}, {0.0, 4.0, 0.0});
     const Eigen::Matrix3Xd floor_points = patch.sample(4000, engine).points;
     std::vector<Eigen::Vector3d> floor_items(floor_points.colwise().begin(), floor_points.colwise().end());
     const PCCD::Point_cloud_object<> floor(floor_items);

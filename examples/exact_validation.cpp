@@ -8,7 +8,7 @@
 #include <PCCD/Exact/mesh_separation.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/sample_triangle_mesh.h>
+#include <PCCD/sample_triangle_mesh.h>
 
 #include <Eigen/Geometry>
 

@@ -2,13 +2,13 @@
 // one call, then evaluate f(x) = n(x) . (x - a(x)) at cloud points and anywhere near the cloud; far
 // away f is undefined.
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/Torus_shape.h>
+#include <PCCD/testing/Torus_shape.h>
 
 #include <iostream>
 #include <optional>
 
 using Object = PCCD::Point_cloud_object<>; // Eigen_kernel<double>, geodesic kernel by default
-using Torus = PCCD::Torus_shape;
+using Torus = PCCD::testing::Torus_shape;
 using Vector = Eigen::Vector3d;
 
 int main()

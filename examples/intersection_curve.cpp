@@ -7,8 +7,8 @@
 #include <PCCD/IO/write_points.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/Sphere_shape.h>
-#include <PCCD/Sampling/Torus_shape.h>
+#include <PCCD/testing/Sphere_shape.h>
+#include <PCCD/testing/Torus_shape.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,8 +18,8 @@
 
 using Object = PCCD::Point_cloud_object<>;
 using Pose = PCCD::Rigid_transform_3<double>;
-using Sphere = PCCD::Sphere_shape;
-using Torus = PCCD::Torus_shape;
+using Sphere = PCCD::testing::Sphere_shape;
+using Torus = PCCD::testing::Torus_shape;
 
 int main(int argc, char** argv)
 {

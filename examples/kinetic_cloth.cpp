@@ -2,7 +2,7 @@
 // collision query and a ray query at 30 frames per second (doc/manual/kinetic.md).
 #include <PCCD/Kinetic/Kinetic_AABB_tree.h>
 #include <PCCD/Kinetic/Piecewise_linear_flightplan.h>
-#include <scenes/Cloth_scene.h>
+#include <PCCD/testing/scenes/Cloth_scene.h>
 
 #include <iostream>
 #include <utility>
@@ -14,7 +14,7 @@ using Tree = PCCD::Kinetic_AABB_tree<Flightplan, PCCD::Kinetic_triangle>;
 int main()
 {
     // A recorded animation: one key-framed flightplan per cloth vertex, plus the table (at rest).
-    const auto scene = PCCD::make_cloth_scene({.triangles = 1684, .duration = 2.0});
+    const auto scene = PCCD::testing::make_cloth_scene({.triangles = 1684, .duration = 2.0});
     Tree cloth(scene.flightplans, scene.primitives, scene.start_time);
     Tree table(scene.obstacle_flightplans, scene.obstacle_triangles, scene.start_time);
 

@@ -6,8 +6,8 @@
 #include <PCCD/Intersection/do_intersect_many.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Sphere_shape.h>
-#include <PCCD/Sampling/Torus_shape.h>
+#include <PCCD/testing/Sphere_shape.h>
+#include <PCCD/testing/Torus_shape.h>
 
 #include <Eigen/Geometry>
 
@@ -25,8 +25,8 @@ using Clock = std::chrono::steady_clock;
 int main()
 {
     PCCD::Random_engine engine(3);
-    const Object torus(PCCD::Torus_shape(0.7, 0.3).sample(4000, engine).points);
-    const Object sphere(PCCD::Sphere_shape(Eigen::Vector3d::Zero(), 0.5).sample(2000, engine).points);
+    const Object torus(PCCD::testing::Torus_shape(0.7, 0.3).sample(4000, engine).points);
+    const Object sphere(PCCD::testing::Sphere_shape(Eigen::Vector3d::Zero(), 0.5).sample(2000, engine).points);
 
     // The sphere slides along x past the torus, turned a little more at each step.
     std::vector<Pair> pairs;

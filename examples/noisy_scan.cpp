@@ -5,7 +5,7 @@
 // bounding box, so the example needs no data files.
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/Torus_shape.h>
+#include <PCCD/testing/Torus_shape.h>
 
 #include <Eigen/Geometry>
 
@@ -19,7 +19,7 @@ using Vector = Eigen::Vector3d;
 int main()
 {
     // 8000 points on a torus (spacing about 0.5 sqrt(area / n)), noise 0.5 spacings, 80 stray points.
-    const PCCD::Torus_shape torus(0.7, 0.3);
+    const PCCD::testing::Torus_shape torus(0.7, 0.3);
     const double spacing = 0.5 * std::sqrt(torus.area() / 8000.0);
     PCCD::Random_engine engine(3);
     Eigen::Matrix3Xd points = torus.sample(8000, engine, {.noise_sigma = 0.5 * spacing}).points;

@@ -5,7 +5,7 @@
 #include <PCCD/Intersection/Intersection_visitor.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/Sphere_shape.h>
+#include <PCCD/testing/Sphere_shape.h>
 
 #include <cmath>
 #include <cstdio>
@@ -30,7 +30,7 @@ struct Counting_visitor final : PCCD::Intersection_visitor {
 
 int main()
 {
-    const PCCD::Sphere_shape sphere(Eigen::Vector3d::Zero(), 1.0);
+    const PCCD::testing::Sphere_shape sphere(Eigen::Vector3d::Zero(), 1.0);
     PCCD::Random_engine engine(5);
     const PCCD::Point_cloud_object<> a(sphere.sample(5000, engine).points);
     const PCCD::Point_cloud_object<> b(sphere.sample(5000, engine).points);

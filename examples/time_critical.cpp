@@ -5,7 +5,7 @@
 #include <PCCD/Hierarchy/Sphere_covering.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/Sphere_shape.h>
+#include <PCCD/testing/Sphere_shape.h>
 
 #include <cstdio>
 
@@ -14,7 +14,7 @@ using Pose = PCCD::Rigid_transform_3<double>;
 
 int main()
 {
-    const PCCD::Sphere_shape sphere(Eigen::Vector3d::Zero(), 1.0);
+    const PCCD::testing::Sphere_shape sphere(Eigen::Vector3d::Zero(), 1.0);
     PCCD::Random_engine engine(5);
     const Object a(sphere.sample(5000, engine).points);
     const Object b(sphere.sample(5000, engine).points);

@@ -5,9 +5,9 @@
 
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Plane_patch_shape.h>
-#include <PCCD/Sampling/Sphere_shape.h>
-#include <PCCD/Sampling/Torus_shape.h>
+#include <PCCD/testing/Plane_patch_shape.h>
+#include <PCCD/testing/Sphere_shape.h>
+#include <PCCD/testing/Torus_shape.h>
 
 #include <Eigen/Core>
 
@@ -43,7 +43,7 @@ std::vector<Query> queries_near(const Shape& shape, std::size_t count, double ba
     std::vector<Query> out;
     out.reserve(count);
     for (std::size_t k = 0; k < count; ++k) {
-        const PCCD::Surface_point p = shape.random_point(engine);
+        const PCCD::testing::Surface_point p = shape.random_point(engine);
         const double t = PCCD::uniform_real(engine, -band, band);
         const Eigen::Vector3d x = p.position + t * p.normal;
         out.push_back({x, shape.signed_distance(x), p.position, p.normal});
@@ -59,19 +59,19 @@ struct Test_shape {
     bool closed;
 };
 
-inline const PCCD::Sphere_shape& unit_sphere()
+inline const PCCD::testing::Sphere_shape& unit_sphere()
 {
-    static const PCCD::Sphere_shape shape(Eigen::Vector3d::Zero(), 1.0);
+    static const PCCD::testing::Sphere_shape shape(Eigen::Vector3d::Zero(), 1.0);
     return shape;
 }
-inline const PCCD::Torus_shape& test_torus()
+inline const PCCD::testing::Torus_shape& test_torus()
 {
-    static const PCCD::Torus_shape shape(1.0, 0.4);
+    static const PCCD::testing::Torus_shape shape(1.0, 0.4);
     return shape;
 }
-inline const PCCD::Plane_patch_shape& test_plane()
+inline const PCCD::testing::Plane_patch_shape& test_plane()
 {
-    static const PCCD::Plane_patch_shape shape(Eigen::Vector3d(-1, -1, 0), Eigen::Vector3d(2, 0, 0),
+    static const PCCD::testing::Plane_patch_shape shape(Eigen::Vector3d(-1, -1, 0), Eigen::Vector3d(2, 0, 0),
                                                Eigen::Vector3d(0, 2, 0));
     return shape;
 }
@@ -88,7 +88,7 @@ void for_each_test_shape(const Body& body)
 /// The sampled cloud: n points with Gaussian noise of sigma = noise * 0.5 sqrt(area / n) (about
 /// `noise` mean spacings).
 template <class Shape>
-PCCD::Surface_sample sample_shape(const Shape& shape, std::size_t n, double noise, std::uint64_t seed)
+PCCD::testing::Surface_sample sample_shape(const Shape& shape, std::size_t n, double noise, std::uint64_t seed)
 {
     PCCD::Random_engine engine(seed);
     const double sigma = noise * 0.5 * std::sqrt(shape.area() / double(n));

@@ -10,10 +10,10 @@
 
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/pose_generator.h>
-#include <PCCD/Sampling/sample_triangle_mesh.h>
+#include <PCCD/testing/pose_generator.h>
+#include <PCCD/sample_triangle_mesh.h>
 
-#include <common/statistics.h>
+#include <PCCD/testing/statistics.h>
 
 #include <algorithm>
 #include <cmath>
@@ -102,13 +102,13 @@ Object_points load_bench_points(const Bench_options& o, std::string& description
     return result;
 }
 
-using pccd_bench::mean;
-using pccd_bench::median;
+using PCCD::testing::mean;
+using PCCD::testing::median;
 
 void run_bench(const Bench_options& o)
 {
     const std::vector<double> distances = parse_distances(o.distances);
-    const std::vector<PCCD::Benchmark_pose> poses = PCCD::generate_benchmark_poses(
+    const std::vector<PCCD::testing::Benchmark_pose> poses = PCCD::testing::generate_benchmark_poses(
         {.distances = distances, .rotations_per_distance = o.rotations, .seed = o.seed});
     const bool write_csv = !o.csv.empty();
     std::ofstream csv;
@@ -142,7 +142,7 @@ void run_bench(const Bench_options& o)
         std::vector<double> times, evaluations;
         std::size_t colliding = 0;
         for (; next < poses.size() && poses[next].distance == d; ++next) {
-            const PCCD::Benchmark_pose& pose = poses[next];
+            const PCCD::testing::Benchmark_pose& pose = poses[next];
             const Timed_result t = run_timed_query(object, pose.pose_a, object, pose.pose_b, options, o.method, true);
             times.push_back(t.query_us);
             evaluations.push_back(double(t.result.counters.f_evaluations));

@@ -12,9 +12,9 @@
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud.h>
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/pose_generator.h>
+#include <PCCD/testing/pose_generator.h>
 
-#include <common/timing.h>
+#include <PCCD/testing/timing.h>
 
 #include <algorithm>
 #include <chrono>
@@ -32,8 +32,8 @@
 namespace pccd_tool {
 namespace {
 
-using pccd_bench::Clock;
-using pccd_bench::ms_since;
+using PCCD::testing::Clock;
+using PCCD::testing::ms_since;
 
 struct Demo_options {
     std::size_t points = 30000;
@@ -151,7 +151,7 @@ void run_demo(const Demo_options& options)
                     defined > 0 ? sum / defined : 0.0, defined, probes);
     }
 
-    const auto poses = PCCD::generate_benchmark_poses({.distances = {0.0, 1.0, 1.5, 2.0, 2.5},
+    const auto poses = PCCD::testing::generate_benchmark_poses({.distances = {0.0, 1.0, 1.5, 2.0, 2.5},
                                                        .rotations_per_distance = 1, .seed = options.seed});
     std::printf("collisions of two copies (doc/algorithms.md, \"Benchmark procedure\"): A = [R_A | 0], B = [R_B | (d, 0, 0)]\n");
     std::vector<Timing_row> rows;

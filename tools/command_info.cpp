@@ -11,8 +11,8 @@
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Proximity_graph/graph_components.h>
 
-#include <common/statistics.h>
-#include <common/timing.h>
+#include <PCCD/testing/statistics.h>
+#include <PCCD/testing/timing.h>
 
 #include <nlohmann/json.hpp>
 
@@ -27,12 +27,12 @@
 namespace pccd_tool {
 namespace {
 
-using pccd_bench::Clock;
-using pccd_bench::ms_since;
+using PCCD::testing::Clock;
+using PCCD::testing::ms_since;
 
 nlohmann::json vector_json(const Eigen::Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
 
-double median_of(const Eigen::VectorXd& v) { return pccd_bench::upper_median({v.data(), v.data() + v.size()}); }
+double median_of(const Eigen::VectorXd& v) { return PCCD::testing::upper_median({v.data(), v.data() + v.size()}); }
 
 nlohmann::json describe_file(const std::string& path)
 {

@@ -1,10 +1,10 @@
 // pccd kinetic-bench: plays a recorded scene (cloth falling on a table, deforming point cloud or
 // random linear motion) with the kinetic AABB tree, bottom-up refit and full rebuild at one query
 // rate, and prints BV updates, events and time per frame of each (doc/manual/kinetic.md, "When to
-// use which"; the scenes are benchmark/scenes/, target pccd_kinetic_scenes).
+// use which"; the scenes are PCCD/testing/scenes/, target PCCD::testing).
 // The queries per frame: the overlap with the scene's obstacle (the table; a range query for the
 // point scenes) unless --no-overlap, plus --rays N first-hit ray casts (cloth only; fixed rays, the
-// same for every method, see PCCD::Kinetic_run_options::rays_per_frame). --given-positions hands
+// same for every method, see PCCD::testing::Kinetic_run_options::rays_per_frame). --given-positions hands
 // the frame's positions to the trees; --warm-up S measures from S seconds into the animation.
 // --scene bunny-contact plays the deforming contact scene instead: per frame the verdict and time of
 // the deforming object (Deforming_point_cloud_object) against a rigid sphere cloud, and those of a
@@ -14,12 +14,12 @@
 
 #include <PCCD/Error.h>
 
-#include <scenes/Bunny_contact_scene.h>
-#include <scenes/Cloth_scene.h>
-#include <scenes/Deforming_cloud_scene.h>
-#include <scenes/Random_motion_scene.h>
-#include <scenes/run_contact_scene.h>
-#include <scenes/run_kinetic_scene.h>
+#include <PCCD/testing/scenes/Bunny_contact_scene.h>
+#include <PCCD/testing/scenes/Cloth_scene.h>
+#include <PCCD/testing/scenes/Deforming_cloud_scene.h>
+#include <PCCD/testing/scenes/Random_motion_scene.h>
+#include <PCCD/testing/scenes/run_contact_scene.h>
+#include <PCCD/testing/scenes/run_kinetic_scene.h>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -54,16 +54,16 @@ struct Kinetic_bench_args {
 void run_contact(const Kinetic_bench_args& args)
 {
     const std::string data = PCCD_DATA_DIR;
-    PCCD::Bunny_contact_options o{.off_file = data.empty() ? "" : data + "/bunny00.off"};
+    PCCD::testing::Bunny_contact_options o{.off_file = data.empty() ? "" : data + "/bunny00.off"};
     if (args.size_given) o.points = args.size;
     o.frame_rate = args.query_hz;
     if (args.frames > 0) o.duration = double(args.frames - 1) / args.query_hz;
     if (data.empty()) std::cerr << "pccd: PCCD_DATA_DIR is empty, using a procedural bumpy sphere\n";
-    const PCCD::Bunny_contact_scene scene = PCCD::make_bunny_contact_scene(o);
-    const PCCD::Contact_run run = PCCD::run_contact_scene(
+    const PCCD::testing::Bunny_contact_scene scene = PCCD::testing::make_bunny_contact_scene(o);
+    const PCCD::testing::Contact_run run = PCCD::testing::run_contact_scene(
         scene, {.threads = args.threads,
                 .normals = args.normals == "refit" ? PCCD::Normal_update::refit : PCCD::Normal_update::transport});
-    using F = PCCD::Contact_frame;
+    using F = PCCD::testing::Contact_frame;
     if (!args.csv.empty()) {
         std::ofstream file(args.csv);
         if (!file) throw PCCD::File_error(args.csv, "kinetic-bench cannot open it for writing");
@@ -130,9 +130,9 @@ void run_contact(const Kinetic_bench_args& args)
 }
 
 template <class P>
-void run_and_print(const PCCD::Kinetic_scene<P>& scene, const Kinetic_bench_args& args)
+void run_and_print(const PCCD::testing::Kinetic_scene<P>& scene, const Kinetic_bench_args& args)
 {
-    const PCCD::Kinetic_run_options options{
+    const PCCD::testing::Kinetic_run_options options{
         .query_hz = args.query_hz,
         .overlap_query = !args.no_overlap,
         .rays_per_frame = args.rays,
@@ -147,10 +147,10 @@ void run_and_print(const PCCD::Kinetic_scene<P>& scene, const Kinetic_bench_args
     out["rays_per_frame"] = args.rays;
     out["given_positions"] = args.given_positions;
     out["warm_up_s"] = args.warm_up;
-    for (const auto method : {PCCD::Kinetic_method::kinetic, PCCD::Kinetic_method::bottom_up,
-                              PCCD::Kinetic_method::rebuild}) {
-        const auto r = PCCD::run_kinetic_scene(scene, method, options);
-        const std::string name = PCCD::to_string(method);
+    for (const auto method : {PCCD::testing::Kinetic_method::kinetic, PCCD::testing::Kinetic_method::bottom_up,
+                              PCCD::testing::Kinetic_method::rebuild}) {
+        const auto r = PCCD::testing::run_kinetic_scene(scene, method, options);
+        const std::string name = PCCD::testing::to_string(method);
         out["bv_updates"][name] = r.bv_updates;
         out["ms_per_frame"][name] = r.ms_per_frame;
         out["cpu_ms_per_frame"][name] = r.cpu_ms_per_frame;
@@ -160,7 +160,7 @@ void run_and_print(const PCCD::Kinetic_scene<P>& scene, const Kinetic_bench_args
         out["nodes"] = r.nodes;
         out["frames"] = r.frames;
         out["queries"] = r.queries;
-        if (method == PCCD::Kinetic_method::kinetic) {
+        if (method == PCCD::testing::Kinetic_method::kinetic) {
             out["events"] = r.events;
             out["node_updates"] = r.node_updates;
             out["certificate_computations"] = r.certificate_computations;
@@ -245,19 +245,19 @@ void register_kinetic_bench(CLI::App& app)
         const bool custom_length = args->frames > 0;
         const double duration = custom_length ? args->warm_up + double(args->frames) / args->query_hz : 0.0;
         if (args->scene == "cloth") {
-            PCCD::Cloth_scene_options o{.triangles = args->size};
+            PCCD::testing::Cloth_scene_options o{.triangles = args->size};
             if (custom_length) o.duration = duration;
-            run_and_print(PCCD::make_cloth_scene(o), *args);
+            run_and_print(PCCD::testing::make_cloth_scene(o), *args);
         } else if (args->scene == "bunny") {
             const std::string data = PCCD_DATA_DIR;
-            PCCD::Deforming_cloud_options o{.off_file = data.empty() ? "" : data + "/bunny00.off", .points = args->size};
+            PCCD::testing::Deforming_cloud_options o{.off_file = data.empty() ? "" : data + "/bunny00.off", .points = args->size};
             if (custom_length) o.duration = duration;
             if (data.empty()) std::cerr << "pccd: PCCD_DATA_DIR is empty, using a procedural bumpy sphere\n";
-            run_and_print(PCCD::make_deforming_cloud_scene(o), *args);
+            run_and_print(PCCD::testing::make_deforming_cloud_scene(o), *args);
         } else {
-            PCCD::Random_motion_options o{.points = args->size};
+            PCCD::testing::Random_motion_options o{.points = args->size};
             if (custom_length) o.duration = duration;
-            run_and_print(PCCD::make_random_motion_scene(o), *args);
+            run_and_print(PCCD::testing::make_random_motion_scene(o), *args);
         }
     });
 }

@@ -5,9 +5,9 @@
 
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Torus_shape.h>
-#include <PCCD/Sampling/Similarity_3.h>
-#include <PCCD/Sampling/sample_triangle_mesh.h>
+#include <PCCD/testing/Torus_shape.h>
+#include <PCCD/Similarity_3.h>
+#include <PCCD/sample_triangle_mesh.h>
 
 #include <cstdint>
 #include <cstdlib>
@@ -56,8 +56,8 @@ inline Demo_object load_demo_object(std::size_t n, std::uint64_t seed)
         return {"bunny", "scanned mesh " + bunny.string() + " (Debian package libcgal-demo)", sample.points,
                 sample.normals, area};
     }
-    const PCCD::Torus_shape torus(0.7, 0.3);
-    const PCCD::Surface_sample sample = torus.sample(n, engine);
+    const PCCD::testing::Torus_shape torus(0.7, 0.3);
+    const PCCD::testing::Surface_sample sample = torus.sample(n, engine);
     return {"torus",
             "embedded default: procedural torus R = 0.7, r = 0.3 (libcgal-demo's scanned meshes not found; "
             "install the Debian package libcgal-demo or set PCCD_DATA_DIR)",

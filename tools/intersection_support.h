@@ -9,9 +9,9 @@
 #include <PCCD/IO/read_points.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/Similarity_3.h>
+#include <PCCD/Similarity_3.h>
 
-#include <common/timing.h>
+#include <PCCD/testing/timing.h>
 
 #include "progress.h"
 
@@ -25,9 +25,9 @@
 
 namespace pccd_tool {
 
-using pccd_bench::Clock;
-using pccd_bench::ms_since;
-using pccd_bench::us_since;
+using PCCD::testing::Clock;
+using PCCD::testing::ms_since;
+using PCCD::testing::us_since;
 
 /// The methods of the --method option: the two leaf intersector policies, by their name().
 /// The names of --hierarchy (Intersection_options::traversal).

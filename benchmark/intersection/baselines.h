@@ -14,8 +14,8 @@ inline std::vector<Method> baseline_methods(const PCCD::benchmark::Fcl_mesh_base
                                             const PCCD::benchmark::Threshold_baseline& threshold)
 {
     return {Method{"fcl", false,
-                   [&fcl](const PCCD::Benchmark_pose& p, std::uint64_t) { return Answer{fcl.collide(p.pose_a, p.pose_b), 0}; }},
-            Method{"threshold", false, [&threshold](const PCCD::Benchmark_pose& p, std::uint64_t) {
+                   [&fcl](const PCCD::testing::Benchmark_pose& p, std::uint64_t) { return Answer{fcl.collide(p.pose_a, p.pose_b), 0}; }},
+            Method{"threshold", false, [&threshold](const PCCD::testing::Benchmark_pose& p, std::uint64_t) {
                        return Answer{threshold.collide(p.pose_a, p.pose_b), 0};
                    }}};
 }

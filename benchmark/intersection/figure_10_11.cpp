@@ -4,8 +4,8 @@
 #include "figures.h"
 #include "runner.h"
 
-#include <common/csv.h>
-#include <common/statistics.h>
+#include <PCCD/testing/csv.h>
+#include <PCCD/testing/statistics.h>
 
 #include <cstdio>
 #include <fstream>
@@ -14,6 +14,11 @@
 #include <vector>
 
 namespace pccd_bench::intersection {
+
+using PCCD::testing::mean;
+using PCCD::testing::median;
+using PCCD::testing::open_csv;
+
 namespace {
 
 /// The header of a table with one column per method after `first` (a header with `first_columns`

@@ -4,8 +4,8 @@
 #include "figures.h"
 #include "runner.h"
 
-#include <common/csv.h>
-#include <common/statistics.h>
+#include <PCCD/testing/csv.h>
+#include <PCCD/testing/statistics.h>
 
 #include <cmath>
 #include <cstdio>
@@ -15,6 +15,10 @@
 #include <vector>
 
 namespace pccd_bench::intersection {
+
+using PCCD::testing::mean;
+using PCCD::testing::open_csv;
+
 namespace {
 
 /// Interpolation_search with n = 20, 50, 100, 150, 200 and the default sample count (the covering

@@ -3,8 +3,8 @@
 #include "figures.h"
 #include "runner.h"
 
-#include <common/csv.h>
-#include <common/statistics.h>
+#include <PCCD/testing/csv.h>
+#include <PCCD/testing/statistics.h>
 
 #include <cmath>
 #include <cstdio>
@@ -13,18 +13,23 @@
 #include <vector>
 
 namespace pccd_bench::intersection {
+
+using PCCD::testing::mean;
+using PCCD::testing::median;
+using PCCD::testing::open_csv;
+
 namespace {
 
 const std::vector<std::string> method_names = {"isearch_object", "isearch_leaf", "rst_object", "rst_leaf"};
 
 /// The benchmark poses with d <= 1.5, args.rotations_fig9 rotation pairs per distance.
-std::vector<PCCD::Benchmark_pose> near_poses(const Arguments& args)
+std::vector<PCCD::testing::Benchmark_pose> near_poses(const Arguments& args)
 {
     std::vector<double> distances;
-    for (const double d : PCCD::default_benchmark_distances())
+    for (const double d : PCCD::testing::default_benchmark_distances())
         if (d <= 1.5) distances.push_back(d);
-    return PCCD::generate_benchmark_poses(
-        PCCD::Pose_options{.distances = distances, .rotations_per_distance = args.rotations_fig9, .seed = args.seed});
+    return PCCD::testing::generate_benchmark_poses(
+        PCCD::testing::Pose_options{.distances = distances, .rotations_per_distance = args.rotations_fig9, .seed = args.seed});
 }
 
 /// The CSV file (with its header) when --csv is given, else a closed stream.
@@ -53,7 +58,7 @@ void print_header()
 
 /// Each PCCD method's tally on `poses` (the answers taken as truth: no exact check).
 std::vector<Tally> run_size(const Arguments& args, const Prepared& prepared,
-                            const std::vector<PCCD::Benchmark_pose>& poses)
+                            const std::vector<PCCD::testing::Benchmark_pose>& poses)
 {
     const std::vector<Method> methods = pccd_methods(prepared.object);
     std::vector<Tally> tallies(methods.size());
@@ -70,7 +75,7 @@ std::vector<Tally> run_size(const Arguments& args, const Prepared& prepared,
 
 int figure_9(const Arguments& args, const PCCD::Triangle_mesh_data& mesh)
 {
-    const std::vector<PCCD::Benchmark_pose> poses = near_poses(args);
+    const std::vector<PCCD::testing::Benchmark_pose> poses = near_poses(args);
     std::printf("Fig. 9: resampled bunny (sample seed %llu), %zu poses (d = 0 .. 1.5, %zu rotation pairs each), "
                 "median of %d runs per query\n\n",
                 (unsigned long long)args.seed, poses.size(), args.rotations_fig9, args.repetitions);

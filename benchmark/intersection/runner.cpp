@@ -1,8 +1,8 @@
 // benchmark/intersection/runner.cpp -- timing the methods and tallying their answers.
 #include "runner.h"
 
-#include <common/statistics.h>
-#include <common/timing.h>
+#include <PCCD/testing/statistics.h>
+#include <PCCD/testing/timing.h>
 
 #include <PCCD/Exact/mesh_separation.h>
 
@@ -10,6 +10,12 @@
 #include <ctime>
 
 namespace pccd_bench::intersection {
+
+using PCCD::testing::Clock;
+using PCCD::testing::median;
+using PCCD::testing::ms_since;
+using PCCD::testing::us_since;
+
 namespace {
 
 /// CPU time of the calling thread, in microseconds: on a loaded machine a long query is preempted
@@ -34,7 +40,7 @@ Distance_row& row_for(std::vector<Distance_row>& rows, double distance, std::siz
 
 } // namespace
 
-Timed_answer timed(int repetitions, const Method& method, const PCCD::Benchmark_pose& pose, std::uint64_t seed)
+Timed_answer timed(int repetitions, const Method& method, const PCCD::testing::Benchmark_pose& pose, std::uint64_t seed)
 {
     std::vector<double> times, cpu_times;
     Answer answer;
@@ -56,7 +62,7 @@ std::vector<Method> pccd_methods(const PCCD::Point_cloud_object<>& object)
             pccd_method("rst_leaf", object, PCCD::Randomized_sampling{}, PCCD::Overlap_region::leaf_boxes)};
 }
 
-void trace(const Arguments& args, const Method& method, const PCCD::Benchmark_pose& pose, std::size_t k,
+void trace(const Arguments& args, const Method& method, const PCCD::testing::Benchmark_pose& pose, std::size_t k,
            const Answer& a, double us)
 {
     if (!args.trace || !method.counts_f) return;
@@ -69,7 +75,7 @@ void trace(const Arguments& args, const Method& method, const PCCD::Benchmark_po
                  c.brackets_tried, c.search_steps, c.bisection_steps);
 }
 
-Truth exact_truth(const PCCD::Exact_mesh& exact, const PCCD::Benchmark_pose& pose, double sampling_radius)
+Truth exact_truth(const PCCD::Exact_mesh& exact, const PCCD::testing::Benchmark_pose& pose, double sampling_radius)
 {
     const PCCD::Exact_separation separation = PCCD::exact_separation(exact, pose.pose_a, exact, pose.pose_b);
     return {separation.surfaces_intersect,
@@ -106,12 +112,12 @@ std::vector<Distance_row> run_poses(const Arguments& args, const std::vector<Met
                                     const PCCD::Exact_mesh& exact, double sampling_radius, int repetitions,
                                     bool traced)
 {
-    const std::vector<PCCD::Benchmark_pose> poses = PCCD::generate_benchmark_poses(
-        PCCD::Pose_options{.rotations_per_distance = args.rotations, .seed = args.seed});
+    const std::vector<PCCD::testing::Benchmark_pose> poses = PCCD::testing::generate_benchmark_poses(
+        PCCD::testing::Pose_options{.rotations_per_distance = args.rotations, .seed = args.seed});
     std::vector<Distance_row> rows;
     const auto start = Clock::now();
     for (std::size_t k = 0; k < poses.size(); ++k) {
-        const PCCD::Benchmark_pose& pose = poses[k];
+        const PCCD::testing::Benchmark_pose& pose = poses[k];
         Distance_row& row = row_for(rows, pose.distance, methods.size());
         const Truth truth = exact_truth(exact, pose, sampling_radius);
         row.add_pose(truth);

@@ -9,7 +9,7 @@
 #include <PCCD/Exact/Exact_mesh.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/pose_generator.h>
+#include <PCCD/testing/pose_generator.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -31,7 +31,7 @@ struct Answer {
 struct Method {
     std::string name;
     bool counts_f = true;
-    std::function<Answer(const PCCD::Benchmark_pose&, std::uint64_t seed)> query;
+    std::function<Answer(const PCCD::testing::Benchmark_pose&, std::uint64_t seed)> query;
 };
 
 /// A method's answer (of the last run) and the median wall (steady_clock) and thread CPU times of
@@ -42,7 +42,7 @@ struct Timed_answer {
     double cpu_us = 0.0;
 };
 
-Timed_answer timed(int repetitions, const Method& method, const PCCD::Benchmark_pose& pose, std::uint64_t seed);
+Timed_answer timed(int repetitions, const Method& method, const PCCD::testing::Benchmark_pose& pose, std::uint64_t seed);
 
 /// A PCCD method: do_intersect on `object` posed twice, with `policy` in `region` under the flat
 /// traversal (WSCG05's region sampling; the regions apply to it only, and the figures of
@@ -52,7 +52,7 @@ template <class Policy>
 Method pccd_method(const std::string& name, const PCCD::Point_cloud_object<>& object, const Policy& policy,
                    PCCD::Overlap_region region)
 {
-    return Method{name, true, [&object, policy, region](const PCCD::Benchmark_pose& p, std::uint64_t seed) {
+    return Method{name, true, [&object, policy, region](const PCCD::testing::Benchmark_pose& p, std::uint64_t seed) {
                       const PCCD::Intersection_result r =
                           PCCD::do_intersect(object, p.pose_a, object, p.pose_b,
                                              PCCD::Intersection_options{.seed = seed,
@@ -67,7 +67,7 @@ Method pccd_method(const std::string& name, const PCCD::Point_cloud_object<>& ob
 std::vector<Method> pccd_methods(const PCCD::Point_cloud_object<>& object);
 
 /// --trace 1: one line per pose and PCCD method on stderr, with the query's counters.
-void trace(const Arguments& args, const Method& method, const PCCD::Benchmark_pose& pose, std::size_t k,
+void trace(const Arguments& args, const Method& method, const PCCD::testing::Benchmark_pose& pose, std::size_t k,
            const Answer& a, double us);
 
 /// The exact class of a pose.
@@ -76,7 +76,7 @@ struct Truth {
     bool grazing = false;
 };
 
-Truth exact_truth(const PCCD::Exact_mesh& exact, const PCCD::Benchmark_pose& pose, double sampling_radius);
+Truth exact_truth(const PCCD::Exact_mesh& exact, const PCCD::testing::Benchmark_pose& pose, double sampling_radius);
 
 /// One method's figures over a set of poses.
 struct Tally {

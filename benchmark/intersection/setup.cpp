@@ -1,12 +1,12 @@
 // benchmark/intersection/setup.cpp -- reading and sampling the bunny, preprocessing the cloud.
 #include "setup.h"
 
-#include <common/timing.h>
+#include <PCCD/testing/timing.h>
 
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Similarity_3.h>
-#include <PCCD/Sampling/sample_triangle_mesh.h>
+#include <PCCD/Similarity_3.h>
+#include <PCCD/sample_triangle_mesh.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -14,6 +14,9 @@
 #include <utility>
 
 namespace pccd_bench::intersection {
+
+using PCCD::testing::Clock;
+using PCCD::testing::ms_since;
 
 std::optional<PCCD::Triangle_mesh_data> read_bunny()
 {

@@ -36,15 +36,9 @@
 #include <PCCD/IO/Point_data.h>
 #include <PCCD/IO/Triangle_mesh_data.h>
 
-// Test data: shapes, mesh sampling, benchmark poses
-#include <PCCD/Sampling/Parallel_sheets_shape.h>
-#include <PCCD/Sampling/Plane_patch_shape.h>
-#include <PCCD/Sampling/Similarity_3.h>
-#include <PCCD/Sampling/Sphere_shape.h>
-#include <PCCD/Sampling/Surface_sample.h>
-#include <PCCD/Sampling/Torus_shape.h>
-#include <PCCD/Sampling/pose_generator.h>
-#include <PCCD/Sampling/sample_triangle_mesh.h>
+// Clouds from triangle meshes, and the unit-cube normalization
+#include <PCCD/Similarity_3.h>
+#include <PCCD/sample_triangle_mesh.h>
 
 // Proximity graphs, the sampling radius, geodesic distances
 #include <PCCD/Geodesic/Close_pairs_shortest_paths.h>

@@ -28,8 +28,8 @@
 #include <PCCD/IO/Triangle_mesh_data.h>
 #include <PCCD/Random.h>
 #include <PCCD/Rigid_transform_3.h>
-#include <PCCD/Sampling/Similarity_3.h>
-#include <PCCD/Sampling/pose_generator.h>
+#include <PCCD/Similarity_3.h>
+#include <PCCD/testing/pose_generator.h>
 #include "build_helpers.h"
 #include "data_helpers.h"
 
@@ -412,8 +412,8 @@ void check_sphere_meshes_against_analytic(const Triangle_mesh_data& data, double
             const double d = factor * diameter;
             const Vector3 direction = Vector3(PCCD::standard_normal(engine), PCCD::standard_normal(engine),
                                               PCCD::standard_normal(engine)).normalized();
-            const Pose pose_a = Pose(PCCD::uniform_random_rotation(engine), Vector3::Zero());
-            const Pose pose_b = Pose(PCCD::uniform_random_rotation(engine), d * direction);
+            const Pose pose_a = Pose(PCCD::testing::uniform_random_rotation(engine), Vector3::Zero());
+            const Pose pose_b = Pose(PCCD::testing::uniform_random_rotation(engine), d * direction);
             const auto analytic = PCCD::exact_sphere_sphere_intersection(Vector3::Zero(), radius, d * direction, radius);
             const bool meshes = PCCD::exact_do_intersect(mesh, pose_a, mesh, pose_b);
             const auto separation = PCCD::exact_separation(mesh, pose_a, mesh, pose_b);
@@ -519,9 +519,9 @@ TEST_CASE("exact separation: distance and penetration vs brute force", "[exact][
     // Debug builds: the first 8 poses (the brute-force references are slow there).
     const int trials = pccd_test::by_build(24, 8);
     for (int trial = 0; trial < trials; ++trial) {
-        const Pose pose_a(PCCD::uniform_random_rotation(engine), Vector3::Zero());
+        const Pose pose_a(PCCD::testing::uniform_random_rotation(engine), Vector3::Zero());
         const double d = 0.3 + 1.5 * PCCD::uniform_01(engine);
-        const Pose pose_b(PCCD::uniform_random_rotation(engine), Vector3(d, 0.2 * PCCD::uniform_01(engine), 0.0));
+        const Pose pose_b(PCCD::testing::uniform_random_rotation(engine), Vector3(d, 0.2 * PCCD::uniform_01(engine), 0.0));
         const World_mesh wa = place(ellipsoid, pose_a), wb = place(ball, pose_b);
         const auto separation = PCCD::exact_separation(a, pose_a, b, pose_b);
         CAPTURE(trial, d, separation.signed_measure());
@@ -615,7 +615,7 @@ TEST_CASE("exact meshes: the bunny against copies of itself", "[exact][mesh][dat
     // The benchmark poses of doc/manual/sampling.md, one rotation pair per distance, against CGAL's
     // do_intersect on transformed copies; the separation's sign agrees with the decision.
     int hits = 0, misses = 0;
-    for (const auto& pose : PCCD::generate_benchmark_poses({.rotations_per_distance = 1, .seed = 3})) {
+    for (const auto& pose : PCCD::testing::generate_benchmark_poses({.rotations_per_distance = 1, .seed = 3})) {
         CAPTURE(pose.distance);
         const bool exact = PCCD::exact_do_intersect(bunny, pose.pose_a, bunny, pose.pose_b);
         CHECK(exact == pmp_do_intersect(bunny, pose.pose_a, bunny, pose.pose_b));

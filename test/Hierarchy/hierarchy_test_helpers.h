@@ -4,7 +4,7 @@
 
 #include <PCCD/Random.h>
 #include <PCCD/Rigid_transform_3.h>
-#include <PCCD/Sampling/pose_generator.h>
+#include <PCCD/testing/pose_generator.h>
 
 #include <Eigen/Core>
 
@@ -36,7 +36,7 @@ inline Eigen::VectorXd hierarchy_reaches(std::size_t n, std::uint64_t seed, doub
 inline PCCD::Rigid_transform_3<double> hierarchy_pose(std::uint64_t seed, double shift)
 {
     PCCD::Random_engine engine(seed);
-    const Eigen::Matrix3d r = PCCD::uniform_random_rotation(engine);
+    const Eigen::Matrix3d r = PCCD::testing::uniform_random_rotation(engine);
     const Eigen::Vector3d t(PCCD::uniform_real(engine, -shift, shift), PCCD::uniform_real(engine, -shift, shift),
                             PCCD::uniform_real(engine, -shift, shift));
     return PCCD::Rigid_transform_3<double>(r, t);

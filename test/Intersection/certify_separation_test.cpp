@@ -9,7 +9,7 @@
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/pose_generator.h>
+#include <PCCD/testing/pose_generator.h>
 
 #include <catch2/catch.hpp>
 
@@ -66,7 +66,7 @@ std::vector<Pose> poses(std::size_t n, std::uint64_t seed)
                                 PCCD::uniform_real(engine, -1.6, 1.6));
         const double d = torus_distance(c);
         if (d < 0.0) continue; // centre inside the tube: nesting cases, left out
-        out.push_back({Rigid_transform_3<double>(PCCD::uniform_random_rotation(engine), c), d - 1.0});
+        out.push_back({Rigid_transform_3<double>(PCCD::testing::uniform_random_rotation(engine), c), d - 1.0});
     }
     return out;
 }

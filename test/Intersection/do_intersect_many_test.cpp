@@ -10,7 +10,7 @@
 #include <PCCD/Intersection/do_intersect_many.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/pose_generator.h>
+#include <PCCD/testing/pose_generator.h>
 
 #include "build_helpers.h"
 #include "intersection_test_helpers.h"
@@ -60,8 +60,8 @@ std::vector<Pair> make_pairs(std::size_t count)
         const Eigen::Vector3d direction(PCCD::standard_normal(engine), PCCD::standard_normal(engine),
                                         PCCD::standard_normal(engine));
         const double distance = k % 4 == 1 ? PCCD::uniform_real(engine, 2.6, 3.2) : PCCD::uniform_real(engine, 0.0, 2.2);
-        const Rigid_transform_3<double> first(PCCD::uniform_random_rotation(engine), Eigen::Vector3d::Zero());
-        const Rigid_transform_3<double> second(PCCD::uniform_random_rotation(engine), distance * direction.normalized());
+        const Rigid_transform_3<double> first(PCCD::testing::uniform_random_rotation(engine), Eigen::Vector3d::Zero());
+        const Rigid_transform_3<double> second(PCCD::testing::uniform_random_rotation(engine), distance * direction.normalized());
         const Point_cloud_object<>* a = k % 3 == 1 ? &o.torus : &o.sphere;
         const Point_cloud_object<>* b = k % 5 == 4 ? &o.sphere : (a == &o.torus ? &o.sphere : &o.torus);
         pairs.push_back({a, first, b, second});

@@ -9,10 +9,10 @@
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Sphere_shape.h>
-#include <PCCD/Sampling/pose_generator.h>
+#include <PCCD/testing/Sphere_shape.h>
+#include <PCCD/testing/pose_generator.h>
 
-#include <common/statistics.h>
+#include <PCCD/testing/statistics.h>
 
 #include <catch2/catch.hpp>
 
@@ -42,7 +42,7 @@ Eigen::Matrix3Xd random_points(std::size_t n, std::uint64_t seed, double flat = 
 Rigid_transform_3<double> random_pose(std::uint64_t seed, double shift)
 {
     PCCD::Random_engine engine(seed);
-    const Eigen::Matrix3d r = PCCD::uniform_random_rotation(engine);
+    const Eigen::Matrix3d r = PCCD::testing::uniform_random_rotation(engine);
     const Eigen::Vector3d t(PCCD::uniform_real(engine, -shift, shift), PCCD::uniform_real(engine, -shift, shift),
                             PCCD::uniform_real(engine, -shift, shift));
     return Rigid_transform_3<double>(r, t);
@@ -243,8 +243,8 @@ TEST_CASE("Two spheres: intersection_points lie on the exact circle and cover it
             std::vector<double> errors;
             for (const auto& p : result.points) errors.push_back(distance_to_circle(p.position, d));
             std::sort(errors.begin(), errors.end());
-            const double median = pccd_bench::sorted_quantile(errors, 50);
-            const double p95 = pccd_bench::sorted_quantile(errors, 95);
+            const double median = PCCD::testing::sorted_quantile(errors, 50);
+            const double p95 = PCCD::testing::sorted_quantile(errors, 95);
             // Coverage: exact circle samples with a returned point within 3 spacings.
             const double radius = std::sqrt(1.0 - d * d / 4.0);
             std::size_t covered = 0, total = 720;

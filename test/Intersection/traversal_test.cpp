@@ -6,7 +6,7 @@
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/pose_generator.h>
+#include <PCCD/testing/pose_generator.h>
 
 #include <catch2/catch.hpp>
 
@@ -52,9 +52,9 @@ std::vector<Pose> poses(std::size_t n, std::uint64_t seed)
     std::vector<Pose> out;
     for (std::size_t k = 0; k < n; ++k) {
         const double d = PCCD::uniform_real(engine, 0.0, 2.6);
-        const Eigen::Matrix3d ra = PCCD::uniform_random_rotation(engine);
-        const Eigen::Matrix3d rb = PCCD::uniform_random_rotation(engine);
-        const Eigen::Vector3d direction = PCCD::uniform_random_rotation(engine).col(0);
+        const Eigen::Matrix3d ra = PCCD::testing::uniform_random_rotation(engine);
+        const Eigen::Matrix3d rb = PCCD::testing::uniform_random_rotation(engine);
+        const Eigen::Vector3d direction = PCCD::testing::uniform_random_rotation(engine).col(0);
         out.push_back({Rigid_transform_3<double>(ra, Eigen::Vector3d::Zero()), Rigid_transform_3<double>(rb, d * direction), d});
     }
     return out;

@@ -11,8 +11,8 @@
 
 #include <catch2/catch.hpp>
 
-#include <scenes/Bunny_contact_scene.h>
-#include <scenes/run_contact_scene.h>
+#include <PCCD/testing/scenes/Bunny_contact_scene.h>
+#include <PCCD/testing/scenes/run_contact_scene.h>
 
 #include <algorithm>
 #include <cmath>
@@ -36,9 +36,9 @@ constexpr double contact_frame_rate = pccd_test::by_build(10.0, 5.0); // 21 or 1
 constexpr int random_times = pccd_test::by_build(3, 1);
 
 /// The procedural contact scene (no data needed), small enough for a unit test.
-PCCD::Bunny_contact_scene small_scene(std::size_t points = 2000)
+PCCD::testing::Bunny_contact_scene small_scene(std::size_t points = 2000)
 {
-    return PCCD::make_bunny_contact_scene({.points = points, .obstacle_points = 1000});
+    return PCCD::testing::make_bunny_contact_scene({.points = points, .obstacle_points = 1000});
 }
 
 /// Every point kept, in the order given: point i of a rebuilt object is point i of the deforming one.
@@ -55,7 +55,7 @@ PCCD::Point_cloud_object<> rebuild(const Eigen::Matrix3Xd& points)
 {
     std::vector<std::size_t> items(std::size_t(points.cols()));
     for (std::size_t i = 0; i < items.size(); ++i) items[i] = i;
-    return PCCD::Point_cloud_object<>(items, PCCD::internal::Matrix_column_map{&points}, no_outliers());
+    return PCCD::Point_cloud_object<>(items, PCCD::testing::detail::Matrix_column_map{&points}, no_outliers());
 }
 
 double quantile(std::vector<double> v, double q)
@@ -67,7 +67,7 @@ double quantile(std::vector<double> v, double q)
 
 /// The true normal of the deformed shape at the image of rest point p with rest normal n: the
 /// image of the tangent plane under the scene's map (central differences), crossed.
-Eigen::Vector3d true_normal(const PCCD::Bunny_contact_scene& scene, const Eigen::Vector3d& p, const Eigen::Vector3d& n,
+Eigen::Vector3d true_normal(const PCCD::testing::Bunny_contact_scene& scene, const Eigen::Vector3d& p, const Eigen::Vector3d& n,
                             double t)
 {
     const Eigen::Vector3d helper = std::abs(n.x()) < 0.6 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
@@ -221,10 +221,10 @@ TEST_CASE("At random times the deformed surface matches one rebuilt from the mov
 
 TEST_CASE("On the contact scene the deforming verdicts agree with a rebuild", "[kinetic][deforming]")
 {
-    auto options = PCCD::Bunny_contact_options{
+    auto options = PCCD::testing::Bunny_contact_options{
         .points = 2000, .obstacle_points = 1000, .duration = 2.0, .frame_rate = contact_frame_rate};
-    const auto check_run = [](const PCCD::Bunny_contact_scene& scene) {
-        const PCCD::Contact_run run = PCCD::run_contact_scene(scene);
+    const auto check_run = [](const PCCD::testing::Bunny_contact_scene& scene) {
+        const PCCD::testing::Contact_run run = PCCD::testing::run_contact_scene(scene);
         const auto frames = std::size_t(2.0 * contact_frame_rate) + 1;
         REQUIRE(run.frames.size() == frames);
         // Contact switches on and off over the animation.
@@ -234,13 +234,13 @@ TEST_CASE("On the contact scene the deforming verdicts agree with a rebuild", "[
         CHECK(run.agreement() >= 0.99);
         CHECK(run.kinetic_exact == run.compared);
     };
-    SECTION("procedural shape") { check_run(PCCD::make_bunny_contact_scene(options)); }
+    SECTION("procedural shape") { check_run(PCCD::testing::make_bunny_contact_scene(options)); }
     SECTION("bunny")
     {
         const std::string data = PCCD_DATA_DIR;
         if (data.empty()) PCCD_SKIP_TEST("PCCD_DATA_DIR is empty (libcgal-demo's meshes are absent)");
         options.off_file = data + "/bunny00.off";
-        check_run(PCCD::make_bunny_contact_scene(options));
+        check_run(PCCD::testing::make_bunny_contact_scene(options));
     }
 }
 

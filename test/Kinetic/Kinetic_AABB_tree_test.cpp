@@ -13,9 +13,9 @@
 #include <PCCD/Kinetic/Refit_AABB_tree.h>
 #include <PCCD/Random.h>
 
-#include <scenes/Cloth_scene.h>
-#include <scenes/Deforming_cloud_scene.h>
-#include <scenes/Random_motion_scene.h>
+#include <PCCD/testing/scenes/Cloth_scene.h>
+#include <PCCD/testing/scenes/Deforming_cloud_scene.h>
+#include <PCCD/testing/scenes/Random_motion_scene.h>
 
 #include <catch2/catch.hpp>
 
@@ -94,7 +94,7 @@ std::vector<double> random_times(PCCD::Random_engine& rng, double begin, double 
 }
 
 template <class P>
-void check_scene_at_random_times(const PCCD::Kinetic_scene<P>& scene, std::uint64_t seed)
+void check_scene_at_random_times(const PCCD::testing::Kinetic_scene<P>& scene, std::uint64_t seed)
 {
     PCCD::Kinetic_AABB_tree<PCCD::Piecewise_linear_flightplan, P> tree(scene.flightplans, scene.primitives,
                                                                        scene.start_time);
@@ -120,7 +120,7 @@ void check_scene_at_random_times(const PCCD::Kinetic_scene<P>& scene, std::uint6
 
 TEST_CASE("kinetic tree equals brute force at 1000 random times: cloth", "[kinetic][tree]")
 {
-    const auto scene = PCCD::make_cloth_scene({.triangles = 300, .duration = 1.5});
+    const auto scene = PCCD::testing::make_cloth_scene({.triangles = 300, .duration = 1.5});
     REQUIRE(std::abs(double(scene.primitives.size()) - 300.0) <= 15.0);
     check_scene_at_random_times(scene, 1);
 }
@@ -129,9 +129,9 @@ TEST_CASE("cloth scene: level or tilted start", "[kinetic][tree]")
 {
     // Level: one height for all particles (exact ties). Tilted by 5 degrees: the height is linear in
     // the horizontal position, with slope tan(5 degrees), centred on drop_height.
-    const auto level = PCCD::make_cloth_scene({.triangles = 200, .duration = 0.1, .tilt_degrees = 0.0});
+    const auto level = PCCD::testing::make_cloth_scene({.triangles = 200, .duration = 0.1, .tilt_degrees = 0.0});
     for (const auto& f : level.flightplans) CHECK(f.position(0.0).z() == 0.3);
-    const auto tilted = PCCD::make_cloth_scene({.triangles = 200, .duration = 0.1});
+    const auto tilted = PCCD::testing::make_cloth_scene({.triangles = 200, .duration = 0.1});
     double low = 1e9, high = -1e9, mean = 0.0;
     for (const auto& f : tilted.flightplans) {
         const Eigen::Vector3d p = f.position(0.0);
@@ -143,20 +143,20 @@ TEST_CASE("cloth scene: level or tilted start", "[kinetic][tree]")
     }
     CHECK(high - low > 0.1);
     CHECK(mean == Approx(0.3).margin(1e-9));
-    CHECK_THROWS_AS(PCCD::make_cloth_scene({.triangles = 200, .tilt_degrees = 90.0}), PCCD::Invalid_input);
+    CHECK_THROWS_AS(PCCD::testing::make_cloth_scene({.triangles = 200, .tilt_degrees = 90.0}), PCCD::Invalid_input);
 }
 
 TEST_CASE("kinetic tree equals brute force at 1000 random times: lightly damped cloth", "[kinetic][tree]")
 {
     // The former default cloth: dropped level (exact height ties) with air drag 2/s, it keeps
     // swinging, and many more near-ties swap.
-    const auto scene = PCCD::make_cloth_scene({.triangles = 300, .duration = 1.5, .tilt_degrees = 0.0, .air_damping = 2.0});
+    const auto scene = PCCD::testing::make_cloth_scene({.triangles = 300, .duration = 1.5, .tilt_degrees = 0.0, .air_damping = 2.0});
     check_scene_at_random_times(scene, 11);
 }
 
 TEST_CASE("kinetic tree equals brute force at 1000 random times: deforming cloud", "[kinetic][tree]")
 {
-    check_scene_at_random_times(PCCD::make_deforming_cloud_scene({.points = 600, .duration = 1.0}), 2);
+    check_scene_at_random_times(PCCD::testing::make_deforming_cloud_scene({.points = 600, .duration = 1.0}), 2);
 }
 
 TEST_CASE("kinetic tree equals brute force at 1000 random times: deforming bunny", "[kinetic][tree][data]")
@@ -164,12 +164,12 @@ TEST_CASE("kinetic tree equals brute force at 1000 random times: deforming bunny
     const std::string data = PCCD_DATA_DIR;
     if (data.empty()) PCCD_SKIP_TEST("bunny00.off of libcgal-demo not found (PCCD_DATA_DIR is empty)");
     check_scene_at_random_times(
-        PCCD::make_deforming_cloud_scene({.off_file = data + "/bunny00.off", .points = 600, .duration = 1.0}), 3);
+        PCCD::testing::make_deforming_cloud_scene({.off_file = data + "/bunny00.off", .points = 600, .duration = 1.0}), 3);
 }
 
 TEST_CASE("kinetic tree equals brute force at 1000 random times: random linear motion", "[kinetic][tree]")
 {
-    check_scene_at_random_times(PCCD::make_random_motion_scene({.points = 700, .duration = 1.0}), 4);
+    check_scene_at_random_times(PCCD::testing::make_random_motion_scene({.points = 700, .duration = 1.0}), 4);
 }
 
 TEST_CASE("kinetic tree with cubic flightplans equals brute force", "[kinetic][tree]")
@@ -246,7 +246,7 @@ TEST_CASE("flightplan changes reschedule the affected certificates", "[kinetic][
 {
     SECTION("continuous and discontinuous changes in the cloth")
     {
-        const auto scene = PCCD::make_cloth_scene({.triangles = 200, .duration = 1.0});
+        const auto scene = PCCD::testing::make_cloth_scene({.triangles = 200, .duration = 1.0});
         PCCD::Kinetic_AABB_tree<PCCD::Piecewise_linear_flightplan> tree(scene.flightplans, scene.primitives, 0.0);
         PCCD::Random_engine rng(12);
         const auto times = random_times(rng, 0.0, 1.2, 1000);
@@ -269,7 +269,7 @@ TEST_CASE("flightplan changes reschedule the affected certificates", "[kinetic][
     }
     SECTION("linear flightplans of a cloud")
     {
-        const auto scene = PCCD::make_random_motion_scene({.points = 300});
+        const auto scene = PCCD::testing::make_random_motion_scene({.points = 300});
         std::vector<PCCD::Linear_flightplan> plans;
         for (const auto& f : scene.flightplans)
             plans.emplace_back(f.key_positions()[0], f.key_positions()[1] - f.key_positions()[0]);
@@ -286,7 +286,7 @@ TEST_CASE("flightplan changes reschedule the affected certificates", "[kinetic][
     }
     SECTION("out of range vertex")
     {
-        const auto scene = PCCD::make_random_motion_scene({.points = 10});
+        const auto scene = PCCD::testing::make_random_motion_scene({.points = 10});
         PCCD::Kinetic_AABB_tree<PCCD::Piecewise_linear_flightplan, PCCD::Kinetic_point> tree(scene.flightplans,
                                                                                              scene.primitives);
         CHECK_THROWS_AS(tree.set_flightplan(10, scene.flightplans[0]), PCCD::Invalid_input);
@@ -295,7 +295,7 @@ TEST_CASE("flightplan changes reschedule the affected certificates", "[kinetic][
 
 TEST_CASE("insertions and removals at run time", "[kinetic][tree]")
 {
-    auto scene = PCCD::make_deforming_cloud_scene({.points = 400, .duration = 1.0});
+    auto scene = PCCD::testing::make_deforming_cloud_scene({.points = 400, .duration = 1.0});
     PCCD::Kinetic_AABB_tree<PCCD::Piecewise_linear_flightplan, PCCD::Kinetic_point> tree(scene.flightplans,
                                                                                          scene.primitives);
     std::set<std::uint32_t> live;
@@ -354,7 +354,7 @@ TEST_CASE("triangle insertions and removals: kinetic and refit trees agree", "[k
     // Leaves hold no certificates, so a leaf child's vertices are candidates of its parent: inserting
     // and removing triangles moves leaves between parents. Both trees share the slot bookkeeping, so
     // they hand out the same indices; their overlap queries with the table agree.
-    const auto scene = PCCD::make_cloth_scene({.triangles = 200, .duration = 1.0});
+    const auto scene = PCCD::testing::make_cloth_scene({.triangles = 200, .duration = 1.0});
     using F = PCCD::Piecewise_linear_flightplan;
     PCCD::Kinetic_AABB_tree<F> tree(scene.flightplans, scene.primitives);
     PCCD::Refit_AABB_tree<F> refit(scene.flightplans, scene.primitives);
@@ -426,7 +426,7 @@ TEST_CASE("exact ties and simultaneous events are deterministic", "[kinetic][tre
 
     SECTION("the cloth's exact height ties give the same result twice")
     {
-        const auto scene = PCCD::make_cloth_scene({.triangles = 128, .duration = 1.0, .tilt_degrees = 0.0});
+        const auto scene = PCCD::testing::make_cloth_scene({.triangles = 128, .duration = 1.0, .tilt_degrees = 0.0});
         auto trace = [&]() {
             PCCD::Kinetic_AABB_tree<PCCD::Piecewise_linear_flightplan> tree(scene.flightplans, scene.primitives);
             tree.advance_to(1.0);

@@ -11,8 +11,8 @@
 #include <PCCD/Kinetic/internal/Crossing_cache.h>
 #include <PCCD/Random.h>
 
-#include <scenes/Cloth_scene.h>
-#include <scenes/run_kinetic_scene.h>
+#include <PCCD/testing/scenes/Cloth_scene.h>
+#include <PCCD/testing/scenes/run_kinetic_scene.h>
 
 #include "kinetic_test_helpers.h"
 
@@ -63,7 +63,7 @@ void check_boxes(const Tree& tree, const std::vector<Eigen::Vector3d>& positions
 }
 
 /// Pairs (cloth triangle, table triangle) whose boxes over `cloth` and `table` positions overlap.
-Pairs brute_force_pairs(const PCCD::Kinetic_scene<PCCD::Kinetic_triangle>& scene,
+Pairs brute_force_pairs(const PCCD::testing::Kinetic_scene<PCCD::Kinetic_triangle>& scene,
                         const std::vector<Eigen::Vector3d>& cloth, double t)
 {
     const auto box_of = [](const PCCD::Kinetic_triangle& tri, auto&& position) {
@@ -93,13 +93,13 @@ Pairs sorted(Pairs p)
 
 TEST_CASE("given positions: boxes, overlap and rays equal brute force and the flightplan mode", "[kinetic][query]")
 {
-    const auto scene = PCCD::make_cloth_scene({.triangles = 400, .duration = 1.5});
+    const auto scene = PCCD::testing::make_cloth_scene({.triangles = 400, .duration = 1.5});
     Kinetic given(scene.flightplans, scene.primitives), evaluated(scene.flightplans, scene.primitives);
     Refit refit_given(scene.flightplans, scene.primitives), refit(scene.flightplans, scene.primitives);
     Kinetic table(scene.obstacle_flightplans, scene.obstacle_triangles);
     Eigen::AlignedBox3d bounds;
     for (const Plan& p : scene.flightplans) bounds.extend(p.position(0.0));
-    const auto rays = PCCD::internal::kinetic_run_rays(bounds, 16);
+    const auto rays = PCCD::testing::detail::kinetic_run_rays(bounds, 16);
     PCCD::Random_engine rng(41);
     std::size_t total_pairs = 0, total_hits = 0;
     for (int k = 0; k < 40; ++k) {
@@ -148,7 +148,7 @@ TEST_CASE("given positions: boxes, overlap and rays equal brute force and the fl
 
 TEST_CASE("given positions: bad arrays are rejected, the mode ends with the positions' validity", "[kinetic][query]")
 {
-    const auto scene = PCCD::make_cloth_scene({.triangles = 200, .duration = 0.5});
+    const auto scene = PCCD::testing::make_cloth_scene({.triangles = 200, .duration = 0.5});
     Kinetic tree(scene.flightplans, scene.primitives);
     Refit refit(scene.flightplans, scene.primitives);
     auto positions = positions_at(scene.flightplans, 0.25);
@@ -201,7 +201,7 @@ TEST_CASE("given positions: bad arrays are rejected, the mode ends with the posi
 
 TEST_CASE("every scheduled certificate equals a fresh next_crossing, with failure times reused", "[kinetic][tree]")
 {
-    const auto scene = PCCD::make_cloth_scene({.triangles = 400, .duration = 2.0});
+    const auto scene = PCCD::testing::make_cloth_scene({.triangles = 400, .duration = 2.0});
     Kinetic tree(scene.flightplans, scene.primitives);
     PCCD::Random_engine rng(7);
     for (int k = 0; k < 60; ++k) {

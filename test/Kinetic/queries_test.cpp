@@ -12,10 +12,10 @@
 #include <PCCD/Kinetic/intersect_ray_triangle.h>
 #include <PCCD/Random.h>
 
-#include <scenes/Cloth_scene.h>
-#include <scenes/Deforming_cloud_scene.h>
-#include <scenes/Random_motion_scene.h>
-#include <scenes/run_kinetic_scene.h>
+#include <PCCD/testing/scenes/Cloth_scene.h>
+#include <PCCD/testing/scenes/Deforming_cloud_scene.h>
+#include <PCCD/testing/scenes/Random_motion_scene.h>
+#include <PCCD/testing/scenes/run_kinetic_scene.h>
 
 #include <catch2/catch.hpp>
 
@@ -54,7 +54,7 @@ Pairs sorted(Pairs p)
 }
 
 template <class TreeA, class TreeB, class TreeC>
-void check_cloth_queries(TreeA& kinetic, TreeB& refit, TreeC& rebuild, const PCCD::Kinetic_scene<PCCD::Kinetic_triangle>& scene,
+void check_cloth_queries(TreeA& kinetic, TreeB& refit, TreeC& rebuild, const PCCD::testing::Kinetic_scene<PCCD::Kinetic_triangle>& scene,
                          std::uint64_t seed)
 {
     PCCD::Kinetic_AABB_tree<PCCD::Piecewise_linear_flightplan> table(scene.obstacle_flightplans,
@@ -175,7 +175,7 @@ void check_cloth_queries(TreeA& kinetic, TreeB& refit, TreeC& rebuild, const PCC
 
 TEST_CASE("cloth queries equal brute force for the kinetic tree and both baselines", "[kinetic][query]")
 {
-    const auto scene = PCCD::make_cloth_scene({.triangles = 400, .duration = 1.5});
+    const auto scene = PCCD::testing::make_cloth_scene({.triangles = 400, .duration = 1.5});
     PCCD::Kinetic_AABB_tree<PCCD::Piecewise_linear_flightplan> kinetic(scene.flightplans, scene.primitives);
     PCCD::Refit_AABB_tree<PCCD::Piecewise_linear_flightplan> refit(scene.flightplans, scene.primitives);
     PCCD::Refit_AABB_tree<PCCD::Piecewise_linear_flightplan> rebuild(scene.flightplans, scene.primitives, 0.0,
@@ -187,8 +187,8 @@ TEST_CASE("cloth queries equal brute force for the kinetic tree and both baselin
 
 TEST_CASE("point clouds: proximity pairs with a margin and the traversal hook", "[kinetic][query]")
 {
-    const auto cloud = PCCD::make_deforming_cloud_scene({.points = 500, .duration = 1.0});
-    const auto other = PCCD::make_random_motion_scene({.points = 400, .duration = 1.0, .seed = 3});
+    const auto cloud = PCCD::testing::make_deforming_cloud_scene({.points = 500, .duration = 1.0});
+    const auto other = PCCD::testing::make_random_motion_scene({.points = 400, .duration = 1.0, .seed = 3});
     using Tree = PCCD::Kinetic_AABB_tree<PCCD::Piecewise_linear_flightplan, PCCD::Kinetic_point>;
     Tree a(cloud.flightplans, cloud.primitives);
     Tree b(other.flightplans, other.primitives);
@@ -236,7 +236,7 @@ TEST_CASE("memoized queries give exactly the answers of the uncached traversal",
     // The tree's queries read positions through a per-query memo; the internal traversals run on
     // the tree itself evaluate box() and vertex_position() afresh at every visit. Same pairs, in the
     // same order, same ray hit bit for bit.
-    const auto scene = PCCD::make_cloth_scene({.triangles = 400, .duration = 1.5, .tilt_degrees = 0.0, .air_damping = 2.0});
+    const auto scene = PCCD::testing::make_cloth_scene({.triangles = 400, .duration = 1.5, .tilt_degrees = 0.0, .air_damping = 2.0});
     using Tree = PCCD::Kinetic_AABB_tree<PCCD::Piecewise_linear_flightplan>;
     Tree cloth(scene.flightplans, scene.primitives);
     Tree table(scene.obstacle_flightplans, scene.obstacle_triangles);
@@ -289,7 +289,7 @@ TEST_CASE("concurrent queries on one tree give the answers of sequential ones", 
 {
     // Queries take memo tables from the tree's pool and give them back; two threads querying the
     // same trees at once get separate tables, and later queries reuse them.
-    const auto scene = PCCD::make_cloth_scene({.triangles = 400, .duration = 1.5});
+    const auto scene = PCCD::testing::make_cloth_scene({.triangles = 400, .duration = 1.5});
     using Tree = PCCD::Kinetic_AABB_tree<PCCD::Piecewise_linear_flightplan>;
     Tree cloth(scene.flightplans, scene.primitives);
     Tree table(scene.obstacle_flightplans, scene.obstacle_triangles);
@@ -321,11 +321,11 @@ TEST_CASE("concurrent queries on one tree give the answers of sequential ones", 
 
 TEST_CASE("run_kinetic_scene: ray casts hit the same triangles with every method", "[kinetic][query]")
 {
-    const auto scene = PCCD::make_cloth_scene({.triangles = 200, .duration = 0.5});
-    const PCCD::Kinetic_run_options options{.overlap_query = false, .rays_per_frame = 16};
-    const auto kinetic = PCCD::run_kinetic_scene(scene, PCCD::Kinetic_method::kinetic, options);
-    const auto bottom_up = PCCD::run_kinetic_scene(scene, PCCD::Kinetic_method::bottom_up, options);
-    const auto rebuild = PCCD::run_kinetic_scene(scene, PCCD::Kinetic_method::rebuild, options);
+    const auto scene = PCCD::testing::make_cloth_scene({.triangles = 200, .duration = 0.5});
+    const PCCD::testing::Kinetic_run_options options{.overlap_query = false, .rays_per_frame = 16};
+    const auto kinetic = PCCD::testing::run_kinetic_scene(scene, PCCD::testing::Kinetic_method::kinetic, options);
+    const auto bottom_up = PCCD::testing::run_kinetic_scene(scene, PCCD::testing::Kinetic_method::bottom_up, options);
+    const auto rebuild = PCCD::testing::run_kinetic_scene(scene, PCCD::testing::Kinetic_method::rebuild, options);
     REQUIRE(kinetic.frames > 0);
     CHECK(kinetic.queries == kinetic.frames * 16);
     CHECK(bottom_up.queries == kinetic.queries);
@@ -335,18 +335,18 @@ TEST_CASE("run_kinetic_scene: ray casts hit the same triangles with every method
     CHECK(kinetic.reported > 0);              // the rays hit the cloth sometimes...
     CHECK(kinetic.reported < kinetic.queries); // ... and miss it sometimes
     // The rays are fixed for a run: playing again gives the same hits.
-    CHECK(PCCD::run_kinetic_scene(scene, PCCD::Kinetic_method::kinetic, options).reported == kinetic.reported);
+    CHECK(PCCD::testing::run_kinetic_scene(scene, PCCD::testing::Kinetic_method::kinetic, options).reported == kinetic.reported);
 }
 
 TEST_CASE("run_kinetic_scene: a query box replaces the overlap, with the primitives of brute force", "[kinetic][query]")
 {
-    const auto scene = PCCD::make_cloth_scene({.triangles = 200, .duration = 1.0});
+    const auto scene = PCCD::testing::make_cloth_scene({.triangles = 200, .duration = 1.0});
     // A box over the table's edge at +x (the cloth drapes over it once it has fallen).
     Eigen::AlignedBox3d table;
     for (const auto& plan : scene.obstacle_flightplans) table.extend(plan.position(scene.start_time));
     const Eigen::Vector3d edge(table.max().x(), table.center().y(), table.max().z());
     const Eigen::AlignedBox3d box(edge - Eigen::Vector3d(0.2, 0.2, 0.3), edge + Eigen::Vector3d(0.2, 0.2, 0.1));
-    const PCCD::Kinetic_run_options options{.query_hz = 20, .query_box = box};
+    const PCCD::testing::Kinetic_run_options options{.query_hz = 20, .query_box = box};
     std::uint64_t expected = 0;
     for (int k = 1; k <= 20; ++k) {
         const double t = scene.start_time + k / 20.0;
@@ -354,24 +354,24 @@ TEST_CASE("run_kinetic_scene: a query box replaces the overlap, with the primiti
             if (overlap(b, box, 0.0)) ++expected;
     }
     REQUIRE(expected > 0);
-    for (const auto method : {PCCD::Kinetic_method::kinetic, PCCD::Kinetic_method::bottom_up,
-                              PCCD::Kinetic_method::rebuild}) {
-        const auto r = PCCD::run_kinetic_scene(scene, method, options);
+    for (const auto method : {PCCD::testing::Kinetic_method::kinetic, PCCD::testing::Kinetic_method::bottom_up,
+                              PCCD::testing::Kinetic_method::rebuild}) {
+        const auto r = PCCD::testing::run_kinetic_scene(scene, method, options);
         CHECK(r.frames == 20);
         CHECK(r.queries == 20);
         CHECK(r.reported == expected);
     }
     // Without the box the same run answers the table overlap: other counts.
-    CHECK(PCCD::run_kinetic_scene(scene, PCCD::Kinetic_method::kinetic, {.query_hz = 20}).reported != expected);
+    CHECK(PCCD::testing::run_kinetic_scene(scene, PCCD::testing::Kinetic_method::kinetic, {.query_hz = 20}).reported != expected);
 }
 
 TEST_CASE("run_kinetic_scene: ray casts on a point scene are rejected", "[kinetic][query]")
 {
-    const auto scene = PCCD::make_random_motion_scene({.points = 20, .duration = 0.2});
-    CHECK_THROWS_AS(PCCD::run_kinetic_scene(scene, PCCD::Kinetic_method::kinetic, {.rays_per_frame = 4}),
+    const auto scene = PCCD::testing::make_random_motion_scene({.points = 20, .duration = 0.2});
+    CHECK_THROWS_AS(PCCD::testing::run_kinetic_scene(scene, PCCD::testing::Kinetic_method::kinetic, {.rays_per_frame = 4}),
                     PCCD::Invalid_input);
-    CHECK_THROWS_AS(PCCD::run_kinetic_scene(scene, PCCD::Kinetic_method::bottom_up,
+    CHECK_THROWS_AS(PCCD::testing::run_kinetic_scene(scene, PCCD::testing::Kinetic_method::bottom_up,
                                             {.overlap_query = false, .rays_per_frame = 1}),
                     PCCD::Invalid_input);
-    CHECK_NOTHROW(PCCD::run_kinetic_scene(scene, PCCD::Kinetic_method::kinetic, {.rays_per_frame = 0}));
+    CHECK_NOTHROW(PCCD::testing::run_kinetic_scene(scene, PCCD::testing::Kinetic_method::kinetic, {.rays_per_frame = 0}));
 }

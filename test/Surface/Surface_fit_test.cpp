@@ -8,7 +8,7 @@
 #include <PCCD/Surface/Surface_fit.h>
 #include <PCCD/Surface/WLS_surface.h>
 
-#include <common/statistics.h>
+#include <PCCD/testing/statistics.h>
 
 #include <catch2/catch.hpp>
 
@@ -39,7 +39,7 @@ PCCD::internal::Sphere_sums sphere_sums(const Eigen::Vector3d& centre, double ra
     return sums;
 }
 
-using pccd_bench::upper_median;
+using PCCD::testing::upper_median;
 
 } // namespace
 
@@ -96,7 +96,7 @@ TEST_CASE("WLS_surface with the sphere fit is the signed distance of a sampled s
 {
     // Exact points and normals of a sphere: the sphere fit reproduces it wherever f is defined
     // (up to rounding); the plane fit's zero set lies inside (shrinkage ~ kappa h^2 / 2).
-    const PCCD::Sphere_shape sphere(Eigen::Vector3d(0.5, 0.0, -0.25), 0.8);
+    const PCCD::testing::Sphere_shape sphere(Eigen::Vector3d(0.5, 0.0, -0.25), 0.8);
     const auto sample = sample_shape(sphere, 3000, 0.0, 31);
     const PCCD::Point_cloud<> cloud(sample.points);
     const PCCD::Gaussian_weight weight(0.12, 0.01);

@@ -83,7 +83,7 @@ Errors errors(const Surface& surface, const std::vector<Query>& queries, double 
     return e;
 }
 
-double orientation_sign(const Object& object, const PCCD::Surface_sample& sample)
+double orientation_sign(const Object& object, const PCCD::testing::Surface_sample& sample)
 {
     double agreement = 0.0;
     for (Eigen::Index i = 0; i < sample.normals.cols(); ++i)

@@ -11,8 +11,8 @@
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Plane_patch_shape.h>
-#include <PCCD/Sampling/Sphere_shape.h>
+#include <PCCD/testing/Plane_patch_shape.h>
+#include <PCCD/testing/Sphere_shape.h>
 #include <PCCD/Surface/Euclidean_distance.h>
 #include <PCCD/Surface/bandwidth.h>
 #include <PCCD/Surface/estimate_normals.h>
@@ -157,7 +157,7 @@ struct Cloud_with_outliers {
 Cloud_with_outliers sphere_with_outliers(std::size_t n, std::size_t outliers, double noise, std::uint64_t seed,
                                          double lo = 1.5, double hi = 2.5)
 {
-    const PCCD::Surface_sample sample = sample_shape(unit_sphere(), n, noise, seed);
+    const PCCD::testing::Surface_sample sample = sample_shape(unit_sphere(), n, noise, seed);
     PCCD::Random_engine engine(seed + 1000);
     std::set<std::uint32_t> at;
     while (at.size() < outliers) at.insert(std::uint32_t(PCCD::uniform_index(engine, n + outliers)));
@@ -305,13 +305,13 @@ TEST_CASE("clean samples and uneven density have no outliers", "[surface]")
     // A plane patch [0, 2] x [0, 1] sampled 16 times denser on its left half than on its right
     // (4 times the spacing on the right): a local density change, not outliers for the local test
     // (measured: the largest l_i / median l_j is 2.3-3.1, against 1.6-2.2 on the clean shapes).
-    const PCCD::Plane_patch_shape left(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0));
-    const PCCD::Plane_patch_shape right(Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0));
+    const PCCD::testing::Plane_patch_shape left(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0));
+    const PCCD::testing::Plane_patch_shape right(Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0));
     for (std::uint64_t seed : {621u, 622u, 623u}) {
         INFO("two densities, seed " << seed);
         PCCD::Random_engine engine(seed);
-        const PCCD::Surface_sample dense = left.sample(1600, engine);
-        const PCCD::Surface_sample sparse = right.sample(100, engine);
+        const PCCD::testing::Surface_sample dense = left.sample(1600, engine);
+        const PCCD::testing::Surface_sample sparse = right.sample(100, engine);
         Eigen::Matrix3Xd points(3, dense.points.cols() + sparse.points.cols());
         points << dense.points, sparse.points;
         const PCCD::Point_cloud<> cloud(points);
@@ -320,8 +320,8 @@ TEST_CASE("clean samples and uneven density have no outliers", "[surface]")
         // either (measured: no outlier on 10 seeds; at 16 times sparser, the global test flags 1 or
         // 2 of the sparse points on 2 seeds of 10).
         PCCD::Random_engine again(seed);
-        const PCCD::Surface_sample dense_again = left.sample(1600, again);
-        const PCCD::Surface_sample sparser = right.sample(200, again);
+        const PCCD::testing::Surface_sample dense_again = left.sample(1600, again);
+        const PCCD::testing::Surface_sample sparser = right.sample(200, again);
         Eigen::Matrix3Xd eightfold(3, dense_again.points.cols() + sparser.points.cols());
         eightfold << dense_again.points, sparser.points;
         CHECK(PCCD::find_outliers(PCCD::Point_cloud<>(eightfold)).empty());

@@ -13,7 +13,7 @@
 #include "surface_test_helpers.h"
 
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/Parallel_sheets_shape.h>
+#include <PCCD/testing/Parallel_sheets_shape.h>
 
 #include <catch2/catch.hpp>
 
@@ -68,7 +68,7 @@ Line_report scan(const Surface& surface, double u, double v, double z0, double z
 TEST_CASE("thin sheets: the Euclidean kernel bleeds across the gap, the geodesic kernel does not", "[surface]")
 {
     const double R = 0.075, theta = 1e-2, gap = 1.5 * R;
-    const PCCD::Parallel_sheets_shape plate(Eigen::Vector3d(-1, -1, 0), Eigen::Vector3d(2, 0, 0),
+    const PCCD::testing::Parallel_sheets_shape plate(Eigen::Vector3d(-1, -1, 0), Eigen::Vector3d(2, 0, 0),
                                             Eigen::Vector3d(0, 2, 0), gap);
     for (double noise : {0.0, 0.2}) {
         const auto sample = sample_shape(plate, 20000, noise, 81);
@@ -144,7 +144,7 @@ TEST_CASE("thin sheets: with the domain, the gap between the sheets is no part o
     // above the sparsest spots of a random sample, where the 6th neighbour lies more than 5 spacings
     // away (measured: 2 of 200 probes defined).
     const double R = 0.075, theta = 1e-2, gap = 1.5 * R;
-    const PCCD::Parallel_sheets_shape plate(Eigen::Vector3d(-1, -1, 0), Eigen::Vector3d(2, 0, 0),
+    const PCCD::testing::Parallel_sheets_shape plate(Eigen::Vector3d(-1, -1, 0), Eigen::Vector3d(2, 0, 0),
                                             Eigen::Vector3d(0, 2, 0), gap);
     const auto sample = sample_shape(plate, 20000, 0.0, 81);
     const PCCD::Point_cloud_object<> object(columns(sample.points), PCCD::Identity_point_map<Eigen::Vector3d>(),

@@ -4,8 +4,8 @@
 // procedural and seeded, so that the tests need no external data.
 #include <PCCD/IO/write_points.h>
 #include <PCCD/IO/write_triangle_mesh.h>
-#include <PCCD/Sampling/Sphere_shape.h>
-#include <PCCD/Sampling/Torus_shape.h>
+#include <PCCD/testing/Sphere_shape.h>
+#include <PCCD/testing/Torus_shape.h>
 
 #include <cmath>
 #include <cstdint>
@@ -15,7 +15,7 @@
 
 namespace {
 
-PCCD::Point_data to_point_data(const PCCD::Surface_sample& sample, bool with_normals)
+PCCD::Point_data to_point_data(const PCCD::testing::Surface_sample& sample, bool with_normals)
 {
     PCCD::Point_data data;
     for (Eigen::Index i = 0; i < sample.points.cols(); ++i) {
@@ -54,9 +54,9 @@ int main(int argc, char** argv)
     const std::filesystem::path dir(argv[1]);
     std::filesystem::create_directories(dir);
     PCCD::Random_engine engine(7);
-    const PCCD::Sphere_shape sphere(Eigen::Vector3d::Zero(), 1.0);
+    const PCCD::testing::Sphere_shape sphere(Eigen::Vector3d::Zero(), 1.0);
     PCCD::IO::write_points((dir / "sphere.xyz").string(), to_point_data(sphere.sample(2000, engine), false));
-    const PCCD::Torus_shape torus(0.7, 0.3);
+    const PCCD::testing::Torus_shape torus(0.7, 0.3);
     PCCD::IO::write_points((dir / "torus.ply").string(), to_point_data(torus.sample(2000, engine), true));
     PCCD::IO::write_triangle_mesh((dir / "torus_mesh.off").string(), torus_mesh(0.7, 0.3, 32, 16));
     std::cout << "wrote sphere.xyz, torus.ply, torus_mesh.off to " << dir.string() << '\n';

@@ -11,7 +11,7 @@
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Sphere_shape.h>
+#include <PCCD/testing/Sphere_shape.h>
 
 #include <catch2/catch.hpp>
 
@@ -37,7 +37,7 @@ const double circle_radius = std::sqrt(1.0 - circle_x * circle_x);  // 0.8
 PCCD::Point_cloud_object<> sphere_object(std::uint64_t seed)
 {
     PCCD::Random_engine engine(seed);
-    const PCCD::Surface_sample sample = PCCD::Sphere_shape(Eigen::Vector3d::Zero(), 1.0).sample(6000, engine);
+    const PCCD::testing::Surface_sample sample = PCCD::testing::Sphere_shape(Eigen::Vector3d::Zero(), 1.0).sample(6000, engine);
     std::vector<Eigen::Vector3d> points;
     for (Eigen::Index i = 0; i < sample.points.cols(); ++i) points.push_back(sample.points.col(i));
     return PCCD::Point_cloud_object<>(points);

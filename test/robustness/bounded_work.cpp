@@ -13,7 +13,7 @@
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Proximity_graph/sphere_of_influence_graph.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/pose_generator.h>
+#include <PCCD/testing/pose_generator.h>
 
 #include <catch2/catch.hpp>
 

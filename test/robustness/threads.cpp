@@ -7,7 +7,7 @@
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/pose_generator.h>
+#include <PCCD/testing/pose_generator.h>
 
 #include "build_helpers.h"
 #include "intersection_test_helpers.h"
@@ -82,8 +82,8 @@ std::vector<Query> make_queries(std::size_t count)
         const Eigen::Vector3d direction(PCCD::standard_normal(engine), PCCD::standard_normal(engine),
                                         PCCD::standard_normal(engine));
         const double distance = PCCD::uniform_real(engine, 0.0, 2.8);
-        const Eigen::Matrix3d rs = PCCD::uniform_random_rotation(engine);
-        const Eigen::Matrix3d rt = PCCD::uniform_random_rotation(engine);
+        const Eigen::Matrix3d rs = PCCD::testing::uniform_random_rotation(engine);
+        const Eigen::Matrix3d rt = PCCD::testing::uniform_random_rotation(engine);
         const Eigen::Vector3d shift(PCCD::uniform_real(engine, -1, 1), PCCD::uniform_real(engine, -1, 1),
                                     PCCD::uniform_real(engine, -1, 1));
         const Rigid_transform_3<double> torus(rt, shift);

@@ -9,17 +9,27 @@
 #error "PCCD/PCCD.h pulled in a CGAL header; the core must not need CGAL"
 #endif
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 int main()
 {
+    // 3000 points uniform on the unit sphere (Archimedes: z uniform in [-1, 1], azimuth uniform);
+    // the outward normal of each is the point itself.
     PCCD::Random_engine engine(7);
-    const PCCD::Sphere_shape sphere(Eigen::Vector3d::Zero(), 1.0);
-    const PCCD::Surface_sample sample = sphere.sample(3000, engine);
+    Eigen::Matrix3Xd points(3, 3000);
+    for (Eigen::Index i = 0; i < points.cols(); ++i) {
+        const double z = PCCD::uniform_real(engine, -1.0, 1.0);
+        const double phi = 2.0 * std::numbers::pi * PCCD::uniform_01(engine);
+        const double rho = std::sqrt(std::max(0.0, 1.0 - z * z));
+        points.col(i) = Eigen::Vector3d(rho * std::cos(phi), rho * std::sin(phi), z);
+    }
+    const Eigen::Matrix3Xd& normals = points;
 
-    const auto a = PCCD::make_point_cloud_object(sample.points);                  // normals estimated
-    const auto b = PCCD::make_point_cloud_object(sample.points, sample.normals);  // normals as hints
+    const auto a = PCCD::make_point_cloud_object(points);           // normals estimated
+    const auto b = PCCD::make_point_cloud_object(points, normals);  // normals as hints
 
     const PCCD::Rigid_transform_3<double> pose_a;
     const PCCD::Rigid_transform_3<double> near(Eigen::Matrix3d::Identity(), Eigen::Vector3d(1.5, 0.0, 0.0));
@@ -41,7 +51,7 @@ int main()
 
     // Bad input is rejected with a clear message.
     try {
-        (void)PCCD::make_point_cloud_object(sample.points, Eigen::Matrix3Xd(3, 2));
+        (void)PCCD::make_point_cloud_object(points, Eigen::Matrix3Xd(3, 2));
         std::printf("mismatched normals were accepted\n");
         return 1;
     } catch (const PCCD::Invalid_input& e) {

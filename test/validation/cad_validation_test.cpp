@@ -13,7 +13,7 @@
 // never as passed. Release runs 10 rotations per distance on six models; Debug and sanitizer builds
 // run a smoke version of the same code (one model, two densities, 2 rotations) with the same bounds.
 #include "../build_helpers.h"
-#include "scan_validation.h"
+#include <PCCD/testing/scan_validation.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -28,10 +28,10 @@ const std::vector<std::string> models = pccd_test::by_build(
     std::vector<std::string>{"anchor.off", "joint.off", "cheese.off", "helmet.off", "handle.off", "fandisk.off"},
     std::vector<std::string>{"anchor.off"});
 const std::vector<std::size_t> densities =
-    pccd_test::by_build(pccd_test::cad_densities(), std::vector<std::size_t>{500, 2000});
+    pccd_test::by_build(PCCD::testing::cad_densities(), std::vector<std::size_t>{500, 2000});
 
-using pccd_test::check;
-using pccd_test::percent;
+using PCCD::testing::check;
+using PCCD::testing::percent;
 
 } // namespace
 
@@ -43,24 +43,24 @@ int main()
                     dir.c_str());
         return 77;
     }
-    const auto conditions = pccd_test::cad_conditions();
-    std::map<std::string, pccd_test::Scan_row> totals; // per density and condition, all models
+    const auto conditions = PCCD::testing::cad_conditions();
+    std::map<std::string, PCCD::testing::Scan_row> totals; // per density and condition, all models
     std::size_t one_truth_poses = 0, one_truth_violations = 0;
-    pccd_test::print_scan_table_header();
+    PCCD::testing::print_scan_table_header();
     for (const std::string& file : models) {
-        pccd_test::Scan_model model = pccd_test::load_scan_model(dir, file, densities.front(), 2026);
-        const auto separations = pccd_test::exact_truth(model, rotations, 1);
+        PCCD::testing::Scan_model model = PCCD::testing::load_scan_model(dir, file, densities.front(), 2026);
+        const auto separations = PCCD::testing::exact_truth(model, rotations, 1);
         for (std::size_t density : densities) {
-            pccd_test::set_density(model, density, 2026);
-            const auto truth = pccd_test::reclassify(separations, model.clean_r);
+            PCCD::testing::set_density(model, density, 2026);
+            const auto truth = PCCD::testing::reclassify(separations, model.clean_r);
             for (std::size_t c = 0; c < conditions.size(); ++c) {
-                const pccd_test::Scan_cloud cloud = pccd_test::make_scan_cloud(model, conditions[c], 2026 + c);
-                pccd_test::Scan_row row = pccd_test::evaluate_first_hits(model, conditions[c], cloud, truth, true);
+                const PCCD::testing::Scan_cloud cloud = PCCD::testing::make_scan_cloud(model, conditions[c], 2026 + c);
+                PCCD::testing::Scan_row row = PCCD::testing::evaluate_first_hits(model, conditions[c], cloud, truth, true);
                 row.condition = std::to_string(density) + " " + conditions[c].name;
-                pccd_test::print_scan_row(row);
-                pccd_test::add_to(totals[row.condition], row);
+                PCCD::testing::print_scan_row(row);
+                PCCD::testing::add_to(totals[row.condition], row);
                 if (density <= 2000) {
-                    const auto v = pccd_test::one_truth_violations(cloud, truth);
+                    const auto v = PCCD::testing::one_truth_violations(cloud, truth);
                     one_truth_poses += v.first;
                     one_truth_violations += v.second;
                 }
@@ -70,19 +70,19 @@ int main()
     }
 
     std::printf("\nper density and condition, all models together:\n");
-    pccd_test::print_scan_table_header();
+    PCCD::testing::print_scan_table_header();
     for (std::size_t density : densities)
         for (const auto& condition : conditions) {
-            pccd_test::Scan_row& t = totals[std::to_string(density) + " " + condition.name];
+            PCCD::testing::Scan_row& t = totals[std::to_string(density) + " " + condition.name];
             t.model = "all";
             t.condition = std::to_string(density) + " " + condition.name;
-            pccd_test::print_scan_row(t);
+            PCCD::testing::print_scan_row(t);
         }
     std::printf("\nassertions:\n");
     for (std::size_t density : densities)
         for (const auto& condition : conditions) {
             const std::string name = std::to_string(density) + " " + condition.name;
-            const pccd_test::Scan_row& t = totals[name];
+            const PCCD::testing::Scan_row& t = totals[name];
             check(t.isearch.intersecting > 0 && t.isearch.separated > 0, name + ": poses of both classes");
             for (auto [policy, tally] : {std::pair{"isearch", &t.isearch}, std::pair{"rst", &t.rst}}) {
                 check(tally->fn_rate() <= 0.005 && tally->false_negatives <= t.naive.false_negatives + 1,
@@ -95,5 +95,5 @@ int main()
     check(one_truth_poses > 0 && one_truth_violations == 0,
           "one truth: do_intersect says intersecting whenever intersection_points finds a point (" +
               std::to_string(one_truth_violations) + " violations in " + std::to_string(one_truth_poses) + " poses)");
-    return pccd_test::failures() ? 1 : 0;
+    return PCCD::testing::failures() ? 1 : 0;
 }

@@ -9,11 +9,11 @@
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/Similarity_3.h>
-#include <PCCD/Sampling/pose_generator.h>
-#include <PCCD/Sampling/sample_triangle_mesh.h>
+#include <PCCD/Similarity_3.h>
+#include <PCCD/testing/pose_generator.h>
+#include <PCCD/sample_triangle_mesh.h>
 
-#include <common/statistics.h>
+#include <PCCD/testing/statistics.h>
 
 #include <catch2/catch.hpp>
 
@@ -90,11 +90,11 @@ TEST_CASE("Validation on the bunny: do_intersect against CGAL's exact answer", "
     if (!b) {
         PCCD_SKIP_TEST("bunny00.off of libcgal-demo not found (PCCD_DATA_DIR is empty): bunny validation");
     }
-    const auto poses = PCCD::generate_benchmark_poses({.rotations_per_distance = rotations, .seed = 1});
+    const auto poses = PCCD::testing::generate_benchmark_poses({.rotations_per_distance = rotations, .seed = 1});
     std::map<double, Tally> isearch_by_d, rst_by_d;
     Tally isearch, rst;
     std::size_t pose_index = 0;
-    for (const PCCD::Benchmark_pose& pose : poses) {
+    for (const PCCD::testing::Benchmark_pose& pose : poses) {
         const PCCD::Exact_separation separation = PCCD::exact_separation(*b->exact, pose.pose_a, *b->exact, pose.pose_b);
         const PCCD::Pose_class cls = PCCD::classify_pose(separation, b->r);
         const PCCD::Intersection_options options{.seed = 1000 + pose_index++};
@@ -157,12 +157,12 @@ TEST_CASE("Validation on the bunny: intersection points against the exact polyli
         PCCD_SKIP_TEST("bunny00.off of libcgal-demo not found (PCCD_DATA_DIR is empty): bunny curve validation");
     }
     // Intersecting, non-grazing poses spread over the distances.
-    const auto poses = PCCD::generate_benchmark_poses(
+    const auto poses = PCCD::testing::generate_benchmark_poses(
         {.distances = {0.25, 0.5, 0.75, 1.0, 1.25, 1.5}, .rotations_per_distance = 8, .seed = 7});
     std::vector<double> errors;
     std::size_t curve_samples = 0, covered = 0, used = 0, points = 0, refined = 0;
     for (std::size_t k = 0; k < poses.size() && used < curve_poses; ++k) {
-        const PCCD::Benchmark_pose& pose = poses[(k * 7) % poses.size()];
+        const PCCD::testing::Benchmark_pose& pose = poses[(k * 7) % poses.size()];
         if (PCCD::classify_pose(*b->exact, pose.pose_a, *b->exact, pose.pose_b, b->r) != PCCD::Pose_class::intersecting)
             continue;
         ++used;
@@ -197,8 +197,8 @@ TEST_CASE("Validation on the bunny: intersection points against the exact polyli
     REQUIRE(used == curve_poses);
     REQUIRE(!errors.empty());
     std::sort(errors.begin(), errors.end());
-    const double median = pccd_bench::sorted_quantile(errors, 50);
-    const double p95 = pccd_bench::sorted_quantile(errors, 95);
+    const double median = PCCD::testing::sorted_quantile(errors, 50);
+    const double p95 = PCCD::testing::sorted_quantile(errors, 95);
     const double coverage = double(covered) / double(std::max<std::size_t>(curve_samples, 1));
     std::printf("bunny curves: %zu poses, %zu points (%zu refined), distance to the exact polylines: median %.3f, "
                 "p95 %.3f mean spacings; coverage (3 spacings) %.1f %% of %zu curve samples\n",

@@ -10,7 +10,7 @@
 // never as passed. Release runs 20 rotations per distance on both models; Debug and sanitizer builds
 // run a smoke version of the same code (bunny, 3 rotations) and assert the same bounds.
 #include "../build_helpers.h"
-#include "scan_validation.h"
+#include <PCCD/testing/scan_validation.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -24,8 +24,8 @@ constexpr std::size_t curve_poses = pccd_test::by_build<std::size_t>(12, 3);
 const std::vector<std::string> models =
     pccd_test::by_build(std::vector<std::string>{"bunny00.off", "elephant.off"}, std::vector<std::string>{"bunny00.off"});
 
-using pccd_test::check;
-using pccd_test::percent;
+using PCCD::testing::check;
+using PCCD::testing::percent;
 
 } // namespace
 
@@ -36,21 +36,21 @@ int main()
         std::printf("PCCD_DATA_DIR is empty (libcgal-demo not installed): scan validation skipped\n");
         return 77;
     }
-    const auto conditions = pccd_test::scan_conditions();
+    const auto conditions = PCCD::testing::scan_conditions();
     // Per condition, both models together.
-    std::map<std::string, pccd_test::Scan_row> totals;
-    std::map<std::string, std::vector<pccd_test::Curve_figures>> curves;
-    pccd_test::print_scan_table_header();
+    std::map<std::string, PCCD::testing::Scan_row> totals;
+    std::map<std::string, std::vector<PCCD::testing::Curve_figures>> curves;
+    PCCD::testing::print_scan_table_header();
     for (const std::string& file : models) {
-        const pccd_test::Scan_model model = pccd_test::load_scan_model(dir, file, 30000, 2026);
-        const auto truth = pccd_test::exact_truth(model, rotations, 1);
+        const PCCD::testing::Scan_model model = PCCD::testing::load_scan_model(dir, file, 30000, 2026);
+        const auto truth = PCCD::testing::exact_truth(model, rotations, 1);
         for (std::size_t c = 0; c < conditions.size(); ++c) {
-            const pccd_test::Scan_cloud cloud = pccd_test::make_scan_cloud(model, conditions[c], 2026 + c);
-            const pccd_test::Scan_row row = pccd_test::evaluate_first_hits(model, conditions[c], cloud, truth, true);
-            pccd_test::print_scan_row(row);
-            pccd_test::add_to(totals[conditions[c].name], row);
+            const PCCD::testing::Scan_cloud cloud = PCCD::testing::make_scan_cloud(model, conditions[c], 2026 + c);
+            const PCCD::testing::Scan_row row = PCCD::testing::evaluate_first_hits(model, conditions[c], cloud, truth, true);
+            PCCD::testing::print_scan_row(row);
+            PCCD::testing::add_to(totals[conditions[c].name], row);
             if (c == 0 || c == 2) {
-                const auto f = pccd_test::evaluate_curves(model, cloud, truth, curve_poses);
+                const auto f = PCCD::testing::evaluate_curves(model, cloud, truth, curve_poses);
                 std::printf("%-14s %-24s curves: %zu poses, %zu points, distance median %.3f p95 %.3f max %.3f spacings "
                             "(%zu near-contact points, max elsewhere %.3f), coverage %.1f %%\n",
                             file.c_str(), conditions[c].name.c_str(), f.poses, f.points, f.median, f.p95, f.max,
@@ -63,7 +63,7 @@ int main()
 
     std::printf("\nassertions (per condition, both models together):\n");
     for (const auto& condition : conditions) {
-        const pccd_test::Scan_row& t = totals[condition.name];
+        const PCCD::testing::Scan_row& t = totals[condition.name];
         check(t.isearch.intersecting > 0 && t.isearch.separated > 0, condition.name + ": poses of both classes");
         // The acceptance bound: at most 0.5 % false negatives and positives for both policies.
         for (auto [name, tally] : {std::pair{"isearch", &t.isearch}, std::pair{"rst", &t.rst}}) {
@@ -95,5 +95,5 @@ int main()
             check(f.coverage >= 0.95, name + ": curve coverage " + std::to_string(f.coverage));
         }
     }
-    return pccd_test::failures() ? 1 : 0;
+    return PCCD::testing::failures() ? 1 : 0;
 }

@@ -1,4 +1,4 @@
-// PCCD/Sampling/Torus_shape.h -- a ring torus around the z axis with its exact signed distance,
+// PCCD/testing/Torus_shape.h -- a ring torus around the z axis with its exact signed distance,
 // closest point and normal, and a sampler with the correct area density: reference geometry for the
 // tests and benchmarks of doc/algorithms.md, "Benchmark procedure" (a genus-1 surface with
 // curvature of both signs).
@@ -12,9 +12,9 @@
 
 #include <PCCD/Error.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Surface_sample.h>
+#include <PCCD/testing/Surface_sample.h>
 
-namespace PCCD {
+namespace PCCD::testing {
 
 /// The ring torus of major radius R and minor radius r (R > r > 0) with axis parallel to z through
 /// `centre`. With (x, y, z) relative to the centre and rho = sqrt(x^2 + y^2), the surface is
@@ -30,7 +30,7 @@ public:
     Torus_shape(double major_radius, double minor_radius, const Eigen::Vector3d& centre = Eigen::Vector3d::Zero())
         : m_major(major_radius), m_minor(minor_radius), m_centre(centre)
     {
-        internal::check_finite(centre, "torus centre");
+        detail::check_finite(centre, "torus centre");
         if (!(std::isfinite(major_radius) && std::isfinite(minor_radius) && minor_radius > 0.0 &&
               major_radius > minor_radius))
             throw Invalid_input(internal::concat("torus radii R = ", major_radius, ", r = ", minor_radius,
@@ -83,7 +83,7 @@ public:
     /// \throws Invalid_input if the options are invalid.
     Surface_sample sample(std::size_t n, Random_engine& engine, const Sample_options& options = {}) const
     {
-        return internal::sample_shape(*this, n, engine, options);
+        return detail::sample_shape(*this, n, engine, options);
     }
 
 private:
@@ -110,4 +110,4 @@ private:
     Eigen::Vector3d m_centre;
 };
 
-} // namespace PCCD
+} // namespace PCCD::testing

@@ -1,8 +1,9 @@
 // Accuracy of first-hit and curve queries on clouds that look like scans, against CGAL's exact
-// answer and next to the naive point test on the very same clouds. Shared by the validation test
-// (validation/scan_validation_test.cpp) and the benchmark program (benchmark/scan_accuracy.cpp), which print
-// the same table; doc/benchmarks.md "Accuracy on scans" explains it, and it checks the accuracy
-// claims of doc/manual/intersection.md ("Accuracy").
+// answer and next to the naive point test on the very same clouds. Shared by the validation tests
+// (scan_validation_test.cpp, cad_validation_test.cpp) and the benchmark programs (scan_accuracy.cpp,
+// miss_causes.cpp), which print the same table; doc/benchmarks.md "Accuracy on scans" explains it,
+// and it checks the accuracy claims of doc/manual/intersection.md ("Accuracy"). Not library code
+// (testing/, target PCCD::testing; never installed).
 //
 // For each closed scanned mesh (normalized into [-1, 1]^3) and each cloud condition, one cloud is
 // drawn uniformly by area from the mesh and preprocessed once; the benchmark pose procedure (two
@@ -17,12 +18,12 @@
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
-#include <PCCD/Sampling/Similarity_3.h>
-#include <PCCD/Sampling/pose_generator.h>
-#include <PCCD/Sampling/sample_triangle_mesh.h>
+#include <PCCD/Similarity_3.h>
+#include <PCCD/testing/pose_generator.h>
+#include <PCCD/sample_triangle_mesh.h>
 
-#include <common/statistics.h>
-#include <common/timing.h>
+#include <PCCD/testing/statistics.h>
+#include <PCCD/testing/timing.h>
 
 #include <algorithm>
 #include <chrono>
@@ -33,7 +34,7 @@
 #include <string>
 #include <vector>
 
-namespace pccd_test {
+namespace PCCD::testing {
 
 /// One way a scan differs from clean mesh vertices.
 struct Scan_condition {
@@ -148,9 +149,9 @@ inline Scan_cloud make_scan_cloud(const Scan_model& model, const Scan_condition&
         }
     }
     Scan_cloud c;
-    const auto start = pccd_bench::Clock::now();
+    const auto start = Clock::now();
     c.object = std::make_unique<PCCD::Point_cloud_object<>>(points, PCCD::Identity_point_map<Eigen::Vector3d>(), options);
-    c.preprocessing_ms = pccd_bench::ms_since(start);
+    c.preprocessing_ms = ms_since(start);
     c.raw = std::make_unique<PCCD::Point_cloud<>>(points);
     c.spacing = c.raw->mean_spacing();
     return c;
@@ -196,7 +197,7 @@ struct Error_tally {
 
 /// The exact verdicts of the poses of one model (computed once, shared by every condition).
 struct Posed_truth {
-    PCCD::Benchmark_pose pose;
+    Benchmark_pose pose;
     PCCD::Exact_separation separation;
     PCCD::Pose_class cls;
 };
@@ -204,7 +205,7 @@ struct Posed_truth {
 inline std::vector<Posed_truth> exact_truth(const Scan_model& model, std::size_t rotations, std::uint64_t seed)
 {
     std::vector<Posed_truth> out;
-    for (const auto& pose : PCCD::generate_benchmark_poses({.rotations_per_distance = rotations, .seed = seed})) {
+    for (const auto& pose : generate_benchmark_poses({.rotations_per_distance = rotations, .seed = seed})) {
         const auto separation = PCCD::exact_separation(*model.exact, pose.pose_a, *model.exact, pose.pose_b);
         out.push_back({pose, separation, PCCD::classify_pose(separation, model.clean_r)});
     }
@@ -242,12 +243,12 @@ inline Scan_row evaluate_first_hits(const Scan_model& model, const Scan_conditio
     std::size_t k = 0;
     for (const Posed_truth& t : truth) {
         options.seed = 1000 + k++;
-        auto start = pccd_bench::Clock::now();
+        auto start = Clock::now();
         const auto is = PCCD::do_intersect(o, t.pose.pose_a, o, t.pose.pose_b, options);
-        t_is += pccd_bench::us_since(start);
-        start = pccd_bench::Clock::now();
+        t_is += us_since(start);
+        start = Clock::now();
         const auto rst = PCCD::do_intersect(o, t.pose.pose_a, o, t.pose.pose_b, options, PCCD::Randomized_sampling{});
-        t_rst += pccd_bench::us_since(start);
+        t_rst += us_since(start);
         const bool naive = naive_point_test(*cloud.raw, t.pose.pose_a, *cloud.raw, t.pose.pose_b, cloud.spacing);
         row.isearch.add(t.cls, is.intersects);
         row.rst.add(t.cls, rst.intersects);
@@ -419,12 +420,12 @@ inline Curve_figures evaluate_curves(const Scan_model& model, const Scan_cloud& 
     }
     if (!errors.empty()) {
         std::sort(errors.begin(), errors.end());
-        f.median = pccd_bench::sorted_quantile(errors, 50);
-        f.p95 = pccd_bench::sorted_quantile(errors, 95);
+        f.median = sorted_quantile(errors, 50);
+        f.p95 = sorted_quantile(errors, 95);
         f.max = errors.back();
     }
     f.coverage = curve_samples ? double(covered) / double(curve_samples) : 0.0;
     return f;
 }
 
-} // namespace pccd_test
+} // namespace PCCD::testing

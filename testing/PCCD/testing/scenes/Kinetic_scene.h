@@ -1,8 +1,8 @@
-// benchmark/scenes/Kinetic_scene.h -- the recorded animation that the kinetic tests, benchmarks,
+// PCCD/testing/scenes/Kinetic_scene.h -- the recorded animation that the kinetic tests, benchmarks,
 // `pccd kinetic-bench` and the cloth example play (doc/manual/kinetic.md, "Scenes"): vertex
 // trajectories recorded as key frames, i.e. piecewise-linear flightplans, the primitives over them,
-// and an optional static obstacle. Not library code: PCCD's own programs reach benchmark/scenes/
-// through the CMake target pccd_kinetic_scenes, and it is never installed.
+// and an optional static obstacle. Not library code: PCCD's own programs reach testing/ through the
+// CMake target PCCD::testing, and it is never installed.
 #pragma once
 
 #include <string>
@@ -12,7 +12,7 @@
 #include <PCCD/Kinetic/Piecewise_linear_flightplan.h>
 #include <PCCD/concepts/KineticPrimitive.h>
 
-namespace PCCD {
+namespace PCCD::testing {
 
 /// A recorded animation over [start_time, end_time].
 /// \tparam P the primitive type (Kinetic_triangle for the cloth, Kinetic_point for clouds).
@@ -29,4 +29,4 @@ struct Kinetic_scene {
     std::vector<Kinetic_triangle> obstacle_triangles;
 };
 
-} // namespace PCCD
+} // namespace PCCD::testing

@@ -1,5 +1,7 @@
-// PCCD/Sampling/Similarity_3.h -- Similarity_3 and the object normalization of the benchmark
-// procedure (doc/manual/sampling.md, "Normalization"): translate the bounding-box centre to the origin, then scale uniformly by
+// PCCD/Similarity_3.h -- Similarity_3 and the unit-cube normalization of an object, the first step
+// of the benchmark procedure (doc/manual/sampling.md, "Normalization") and the rescaling that the
+// input checks of Point_cloud and the proximity graphs suggest for clouds too large for their
+// arithmetic: translate the bounding-box centre to the origin, then scale uniformly by
 // 2 / (longest bounding-box side), so that the object fits [-1, 1]^3 and touches two opposite faces.
 // The applied similarity is returned, so that a mesh and the cloud sampled from it can be
 // normalized identically.

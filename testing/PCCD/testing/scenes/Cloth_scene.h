@@ -1,8 +1,8 @@
-// benchmark/scenes/Cloth_scene.h -- the talk's benchmark scene (doc/manual/kinetic.md, "Scenes";
+// PCCD/testing/scenes/Cloth_scene.h -- the talk's benchmark scene (doc/manual/kinetic.md, "Scenes";
 // figures in doc/benchmarks.md, "Kinetic AABB tree"): a table cloth falling onto a table, simulated
 // here by a small mass-spring model written for the benchmark, and recorded as key frames. Triangle
 // counts near the talk's 1,684, 6,891 and 15,503 come from a rectangular grid of quads, two
-// triangles each. Not library code (target pccd_kinetic_scenes, never installed).
+// triangles each. Not library code (testing/, target PCCD::testing; never installed).
 #pragma once
 
 #include <algorithm>
@@ -18,9 +18,9 @@
 #include <Eigen/Core>
 
 #include <PCCD/Error.h>
-#include "Kinetic_scene.h"
+#include <PCCD/testing/scenes/Kinetic_scene.h>
 
-namespace PCCD {
+namespace PCCD::testing {
 
 /// Options of make_cloth_scene. Lengths in metres, times in seconds.
 struct Cloth_scene_options {
@@ -62,7 +62,7 @@ struct Cloth_scene_options {
     double friction = 0.6;
 };
 
-namespace internal {
+namespace detail {
 
 /// The a x b quad grid with 2ab closest to `triangles` and aspect b/a <= 1.35 (squarer on ties).
 inline std::pair<std::size_t, std::size_t> cloth_grid(std::size_t triangles)
@@ -84,7 +84,7 @@ inline std::pair<std::size_t, std::size_t> cloth_grid(std::size_t triangles)
     return best;
 }
 
-} // namespace internal
+} // namespace detail
 
 /// Simulates a table cloth falling onto a table and records it.
 ///
@@ -109,7 +109,7 @@ inline Kinetic_scene<Kinetic_triangle> make_cloth_scene(const Cloth_scene_option
         throw Invalid_input(internal::concat("make_cloth_scene: invalid options (triangles ", o.triangles, ", duration ",
                                              o.duration, ", key_rate ", o.key_rate, ", tilt ", o.tilt_degrees,
                                              " degrees; sizes and wave speed must be > 0, |tilt| < 90)"));
-    const auto [qa, qb] = internal::cloth_grid(o.triangles);
+    const auto [qa, qb] = detail::cloth_grid(o.triangles);
     const std::size_t nx = qb + 1, ny = qa + 1; // vertices along the longer (x) and shorter (y) side
     const double h = o.cloth_size / double(qb);
     const std::size_t n = nx * ny;
@@ -240,4 +240,4 @@ inline Kinetic_scene<Kinetic_triangle> make_cloth_scene(const Cloth_scene_option
     return scene;
 }
 
-} // namespace PCCD
+} // namespace PCCD::testing

@@ -1,4 +1,4 @@
-// PCCD/Sampling/Plane_patch_shape.h -- a rectangle in 3-space (a surface with a boundary) with its
+// PCCD/testing/Plane_patch_shape.h -- a rectangle in 3-space (a surface with a boundary) with its
 // signed distance, closest point and normal, and a uniform sampler: reference geometry for the
 // tests of doc/algorithms.md, "Real scans" (boundaries, where the implicit surface over a cloud
 // must stop).
@@ -13,9 +13,9 @@
 
 #include <PCCD/Error.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Surface_sample.h>
+#include <PCCD/testing/Surface_sample.h>
 
-namespace PCCD {
+namespace PCCD::testing {
 
 /// The closed rectangle { corner + s e1 + t e2 : s, t in [0, 1] } with unit normal
 /// n = (e1 x e2) / |e1 x e2| (right-hand rule from e1 to e2).
@@ -42,9 +42,9 @@ public:
     Plane_patch_shape(const Eigen::Vector3d& corner, const Eigen::Vector3d& edge1, const Eigen::Vector3d& edge2)
         : m_corner(corner), m_edge1(edge1), m_edge2(edge2)
     {
-        internal::check_finite(corner, "plane patch corner");
-        internal::check_finite(edge1, "plane patch edge1");
-        internal::check_finite(edge2, "plane patch edge2");
+        detail::check_finite(corner, "plane patch corner");
+        detail::check_finite(edge1, "plane patch edge1");
+        detail::check_finite(edge2, "plane patch edge2");
         const double l1 = edge1.norm(), l2 = edge2.norm();
         if (!(l1 > 0.0 && l2 > 0.0))
             throw Invalid_input(internal::concat("plane patch: edge", l1 > 0.0 ? 2 : 1, " has zero length"));
@@ -98,7 +98,7 @@ public:
     /// \throws Invalid_input if the options are invalid.
     Surface_sample sample(std::size_t n, Random_engine& engine, const Sample_options& options = {}) const
     {
-        return internal::sample_shape(*this, n, engine, options);
+        return detail::sample_shape(*this, n, engine, options);
     }
 
 private:
@@ -108,4 +108,4 @@ private:
     Eigen::Vector3d m_normal;
 };
 
-} // namespace PCCD
+} // namespace PCCD::testing

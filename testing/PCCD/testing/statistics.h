@@ -1,4 +1,4 @@
-// benchmark/common/statistics.h -- the summary statistics of the benchmarks, the pccd tool and the
+// PCCD/testing/statistics.h -- the summary statistics of the benchmarks, the pccd tool and the
 // accuracy tests: mean, median (mean of the two middle values for an even count), upper median and
 // upper quantile (an element of the sorted values, no interpolation). Part of no manual chapter:
 // the figures they summarize are in doc/benchmarks.md and doc/reliability.md.
@@ -10,7 +10,7 @@
 #include <numeric>
 #include <vector>
 
-namespace pccd_bench {
+namespace PCCD::testing {
 
 /// The arithmetic mean of `values`; NaN when empty.
 inline double mean(const std::vector<double>& values)
@@ -46,4 +46,4 @@ inline double upper_median(std::vector<double> values)
     return *middle;
 }
 
-} // namespace pccd_bench
+} // namespace PCCD::testing

@@ -1,10 +1,10 @@
-// Triangle-mesh sampling and the normalization of the benchmark objects (PCCD/Sampling/
-// sample_triangle_mesh.h, Similarity_3.h; doc/manual/sampling.md), against independent truths:
+// Triangle-mesh sampling and the normalization of the benchmark objects (PCCD/sample_triangle_mesh.h,
+// PCCD/Similarity_3.h; doc/manual/sampling.md), against independent truths:
 // triangle areas, chi-square tests of the counts per triangle with fixed seeds, the expected spacing
 // of uniform samples, bounding boxes.
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Similarity_3.h>
-#include <PCCD/Sampling/sample_triangle_mesh.h>
+#include <PCCD/Similarity_3.h>
+#include <PCCD/sample_triangle_mesh.h>
 
 #include <CGAL/IO/OFF.h>
 #include <CGAL/Simple_cartesian.h>

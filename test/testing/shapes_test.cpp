@@ -1,4 +1,4 @@
-// The analytic shapes of PCCD/Sampling/ (Sphere_shape, Torus_shape, Plane_patch_shape,
+// The analytic test shapes of PCCD/testing/ (Sphere_shape, Torus_shape, Plane_patch_shape,
 // Parallel_sheets_shape; doc/manual/sampling.md), each against an independent truth: analytic
 // formulas, brute force over dense parametric grids, chi-square / Kolmogorov-Smirnov tests with fixed
 // seeds.
@@ -6,10 +6,10 @@
 // Statistical tests use fixed seeds and reject at significance level 0.001: the chi-square critical
 // value is the Wilson-Hilferty approximation of the 0.999 quantile, the KS critical value 1.95/sqrt(N).
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Parallel_sheets_shape.h>
-#include <PCCD/Sampling/Plane_patch_shape.h>
-#include <PCCD/Sampling/Sphere_shape.h>
-#include <PCCD/Sampling/Torus_shape.h>
+#include <PCCD/testing/Parallel_sheets_shape.h>
+#include <PCCD/testing/Plane_patch_shape.h>
+#include <PCCD/testing/Sphere_shape.h>
+#include <PCCD/testing/Torus_shape.h>
 
 #include <catch2/catch.hpp>
 
@@ -62,11 +62,11 @@ double brute_force_distance(const Parametrization& surface, const Vector3d& x)
 
 // --- shapes under test -----------------------------------------------------------------------------
 
-const PCCD::Sphere_shape sphere(Vector3d(0.3, -0.2, 0.5), 1.5);
-const PCCD::Torus_shape torus(1.0, 0.35, Vector3d(0.1, 0.2, -0.3));
+const PCCD::testing::Sphere_shape sphere(Vector3d(0.3, -0.2, 0.5), 1.5);
+const PCCD::testing::Torus_shape torus(1.0, 0.35, Vector3d(0.1, 0.2, -0.3));
 // A tilted rectangle 1.5 x 1: edge1 = (1.2, 0.9, 0), edge2 = (-0.36, 0.48, 0.8), perpendicular.
-const PCCD::Plane_patch_shape patch(Vector3d(-0.5, 0.1, 0.2), Vector3d(1.2, 0.9, 0.0), Vector3d(-0.36, 0.48, 0.8));
-const PCCD::Parallel_sheets_shape sheets(Vector3d(-1.0, -0.5, 0.0), Vector3d(2.0, 0.0, 0.0), Vector3d(0.0, 1.0, 0.0),
+const PCCD::testing::Plane_patch_shape patch(Vector3d(-0.5, 0.1, 0.2), Vector3d(1.2, 0.9, 0.0), Vector3d(-0.36, 0.48, 0.8));
+const PCCD::testing::Parallel_sheets_shape sheets(Vector3d(-1.0, -0.5, 0.0), Vector3d(2.0, 0.0, 0.0), Vector3d(0.0, 1.0, 0.0),
                                          0.3);
 
 Parametrization sphere_parametrization()
@@ -87,7 +87,7 @@ Parametrization torus_parametrization()
     };
 }
 
-Parametrization patch_parametrization(const PCCD::Plane_patch_shape& p)
+Parametrization patch_parametrization(const PCCD::testing::Plane_patch_shape& p)
 {
     return [p](double s, double t) { return Vector3d(p.corner() + s * p.edge1() + t * p.edge2()); };
 }
@@ -101,7 +101,7 @@ double torus_implicit(const Vector3d& x)
            torus.minor_radius() * torus.minor_radius();
 }
 
-bool on_patch(const PCCD::Plane_patch_shape& p, const Vector3d& x, double tolerance)
+bool on_patch(const PCCD::testing::Plane_patch_shape& p, const Vector3d& x, double tolerance)
 {
     const Vector3d d = x - p.corner();
     const Vector3d n = p.edge1().cross(p.edge2()).normalized();
@@ -114,7 +114,7 @@ template <class Shape>
 void check_samples_on_shape(const Shape& shape, double size)
 {
     PCCD::Random_engine rng(11);
-    const PCCD::Surface_sample s = shape.sample(4000, rng);
+    const PCCD::testing::Surface_sample s = shape.sample(4000, rng);
     REQUIRE(s.points.cols() == 4000);
     REQUIRE(s.normals.cols() == 4000);
     for (Eigen::Index i = 0; i < s.points.cols(); ++i) {
@@ -275,7 +275,7 @@ TEST_CASE("noise has the requested standard deviation and leaves normals exact",
     // Independent of the clean sample: a horizontal square's noisy z is N(0, sigma^2), and a large
     // sphere's signed distance is nearly the normal component of the noise.
     PCCD::Random_engine rng(55);
-    const PCCD::Plane_patch_shape square(Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(0, 1, 0));
+    const PCCD::testing::Plane_patch_shape square(Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(0, 1, 0));
     const auto flat = square.sample(n, rng, {.noise_sigma = sigma});
     CHECK(std::abs(std::sqrt(flat.points.row(2).array().square().mean()) / sigma - 1.0) < 0.03);
     const auto noisy = sphere.sample(n, rng, {.noise_sigma = sigma});
@@ -418,14 +418,14 @@ TEST_CASE("parallel sheets: signed distance to the nearer sheet against brute fo
 TEST_CASE("analytic shapes reject invalid parameters", "[sampling][shapes][errors]")
 {
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    CHECK_THROWS_WITH(PCCD::Sphere_shape(Vector3d::Zero(), 0.0), Catch::Contains("radius"));
-    CHECK_THROWS_AS(PCCD::Sphere_shape(Vector3d(nan, 0, 0), 1.0), PCCD::Invalid_input);
-    CHECK_THROWS_WITH(PCCD::Torus_shape(0.5, 0.5), Catch::Contains("R > r > 0"));
-    CHECK_THROWS_AS(PCCD::Torus_shape(1.0, -0.1), PCCD::Invalid_input);
-    CHECK_THROWS_WITH(PCCD::Plane_patch_shape(Vector3d::Zero(), Vector3d(1, 0, 0), Vector3d(1, 1, 0)),
+    CHECK_THROWS_WITH(PCCD::testing::Sphere_shape(Vector3d::Zero(), 0.0), Catch::Contains("radius"));
+    CHECK_THROWS_AS(PCCD::testing::Sphere_shape(Vector3d(nan, 0, 0), 1.0), PCCD::Invalid_input);
+    CHECK_THROWS_WITH(PCCD::testing::Torus_shape(0.5, 0.5), Catch::Contains("R > r > 0"));
+    CHECK_THROWS_AS(PCCD::testing::Torus_shape(1.0, -0.1), PCCD::Invalid_input);
+    CHECK_THROWS_WITH(PCCD::testing::Plane_patch_shape(Vector3d::Zero(), Vector3d(1, 0, 0), Vector3d(1, 1, 0)),
                       Catch::Contains("perpendicular"));
-    CHECK_THROWS_WITH(PCCD::Plane_patch_shape(Vector3d::Zero(), Vector3d(1, 0, 0), Vector3d::Zero()),
+    CHECK_THROWS_WITH(PCCD::testing::Plane_patch_shape(Vector3d::Zero(), Vector3d(1, 0, 0), Vector3d::Zero()),
                       Catch::Contains("edge2 has zero length"));
-    CHECK_THROWS_WITH(PCCD::Parallel_sheets_shape(Vector3d::Zero(), Vector3d(1, 0, 0), Vector3d(0, 1, 0), 0.0),
+    CHECK_THROWS_WITH(PCCD::testing::Parallel_sheets_shape(Vector3d::Zero(), Vector3d(1, 0, 0), Vector3d(0, 1, 0), 0.0),
                       Catch::Contains("gap"));
 }

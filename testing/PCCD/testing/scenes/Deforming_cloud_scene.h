@@ -1,9 +1,9 @@
-// benchmark/scenes/Deforming_cloud_scene.h -- a deforming point cloud for the kinetic AABB tree
+// PCCD/testing/scenes/Deforming_cloud_scene.h -- a deforming point cloud for the kinetic AABB tree
 // (doc/manual/kinetic.md, "Scenes"; the tree over Kinetic_point primitives of "Building and
 // advancing"): a shape that twists about its vertical axis and breathes (scales periodically),
 // recorded as key frames. The shape is the vertex set of an OFF mesh read by
 // PCCD::IO::read_triangle_mesh (e.g. CGAL's bunny00.off) or, without a file, a procedural bumpy
-// sphere. Not library code (target pccd_kinetic_scenes, which links CGAL for the reader; never
+// sphere. Not library code (target PCCD::testing, with CGAL::CGAL linked for the reader; never
 // installed).
 #pragma once
 
@@ -24,9 +24,9 @@
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Random.h>
 
-#include "Kinetic_scene.h"
+#include <PCCD/testing/scenes/Kinetic_scene.h>
 
-namespace PCCD {
+namespace PCCD::testing {
 
 /// Options of make_deforming_cloud_scene.
 struct Deforming_cloud_options {
@@ -50,7 +50,7 @@ struct Deforming_cloud_options {
     std::uint64_t seed = 1;
 };
 
-namespace internal {
+namespace detail {
 
 /// n points on a sphere of radius 1 with smooth radial bumps (Fibonacci spiral + random jitter).
 inline std::vector<Eigen::Vector3d> bumpy_sphere(std::size_t n, Random_engine& rng)
@@ -68,7 +68,7 @@ inline std::vector<Eigen::Vector3d> bumpy_sphere(std::size_t n, Random_engine& r
     return points;
 }
 
-} // namespace internal
+} // namespace detail
 
 /// A point cloud that twists and breathes, recorded as key frames (Kinetic_point primitives).
 /// The shape is centred and scaled to height 2; the twist angle grows linearly with height and
@@ -84,7 +84,7 @@ inline Kinetic_scene<Kinetic_point> make_deforming_cloud_scene(const Deforming_c
     std::vector<Eigen::Vector3d> shape;
     Kinetic_scene<Kinetic_point> scene;
     if (o.off_file.empty()) {
-        shape = internal::bumpy_sphere(o.points == 0 ? 2000 : o.points, rng);
+        shape = detail::bumpy_sphere(o.points == 0 ? 2000 : o.points, rng);
         scene.name = "bumpy sphere";
     } else {
         shape = IO::read_triangle_mesh(o.off_file, IO::Format::off).vertices;
@@ -138,4 +138,4 @@ inline Kinetic_scene<Kinetic_point> make_deforming_cloud_scene(const Deforming_c
     return scene;
 }
 
-} // namespace PCCD
+} // namespace PCCD::testing

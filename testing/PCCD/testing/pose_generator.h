@@ -1,4 +1,4 @@
-// PCCD/Sampling/pose_generator.h -- the random poses of the benchmark procedure (doc/algorithms.md,
+// PCCD/testing/pose_generator.h -- the random poses of the benchmark procedure (doc/algorithms.md,
 // "Benchmark procedure"): two normalized objects, A rotated uniformly at random about the origin, B
 // rotated independently and moved to (d, 0, 0): T_A = [R_A | 0], T_B = [R_B | (d, 0, 0)], for d =
 // 0, 0.25, ..., 3 and many rotations per distance. Uniform rotations come from Shoemake's uniform
@@ -23,7 +23,7 @@
 #include <PCCD/Random.h>
 #include <PCCD/Rigid_transform_3.h>
 
-namespace PCCD {
+namespace PCCD::testing {
 
 /// The distances of the WSCG05 benchmark: 0, 0.25, 0.5, ..., 3 (13 values).
 inline std::vector<double> default_benchmark_distances()
@@ -75,7 +75,7 @@ inline Eigen::Matrix3d uniform_random_rotation(Random_engine& engine)
     return uniform_random_quaternion(engine).toRotationMatrix();
 }
 
-namespace internal {
+namespace detail {
 
 /// SplitMix64's output function (Steele, Lea, Flood 2014): a bijective 64-bit mixer.
 constexpr std::uint64_t mix64(std::uint64_t x)
@@ -86,7 +86,7 @@ constexpr std::uint64_t mix64(std::uint64_t x)
     return x ^ (x >> 31);
 }
 
-} // namespace internal
+} // namespace detail
 
 /// The engine of configuration (seed, distance, rotation_index): Random_engine seeded with
 /// mix64(mix64(mix64(seed) ^ bits(distance)) ^ rotation_index), bits() the IEEE-754 bit pattern
@@ -95,7 +95,7 @@ inline Random_engine pose_engine(std::uint64_t seed, double distance, std::size_
 {
     const std::uint64_t distance_bits = std::bit_cast<std::uint64_t>(distance == 0.0 ? 0.0 : distance);
     return Random_engine(
-        internal::mix64(internal::mix64(internal::mix64(seed) ^ distance_bits) ^ std::uint64_t(rotation_index)));
+        detail::mix64(detail::mix64(detail::mix64(seed) ^ distance_bits) ^ std::uint64_t(rotation_index)));
 }
 
 /// The configuration (seed, distance, rotation_index): R_A then R_B drawn from pose_engine(...).
@@ -132,4 +132,4 @@ inline std::vector<Benchmark_pose> generate_benchmark_poses(const Pose_options& 
     return poses;
 }
 
-} // namespace PCCD
+} // namespace PCCD::testing

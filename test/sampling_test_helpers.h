@@ -1,6 +1,6 @@
-// Statistics shared by the sampling tests (test/Sampling/): chi-square and the expected mean
-// nearest-neighbour spacing of uniform samples. Tests reject at significance level 0.001: the
-// chi-square critical value is the Wilson-Hilferty approximation of the 0.999 quantile.
+// Statistics shared by the sampling tests (sample_triangle_mesh_test.cpp and testing/): chi-square
+// and the expected mean nearest-neighbour spacing of uniform samples. Tests reject at significance
+// level 0.001: the chi-square critical value is the Wilson-Hilferty approximation of the 0.999 quantile.
 #pragma once
 
 #include <PCCD/Point_cloud.h>

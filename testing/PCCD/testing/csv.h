@@ -1,4 +1,4 @@
-// benchmark/common/csv.h -- opening the CSV file a benchmark writes (--csv FILE): the stream, its
+// PCCD/testing/csv.h -- opening the CSV file a benchmark writes (--csv FILE): the stream, its
 // number precision, and an error naming the file when it cannot be created. Part of no manual
 // chapter: the CSV files and their columns are described in doc/benchmarks.md.
 #pragma once
@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace pccd_bench {
+namespace PCCD::testing {
 
 /// `path` opened for writing (truncated), numbers written with `precision` significant digits (6,
 /// the stream default, unless asked).
@@ -21,4 +21,4 @@ inline std::ofstream open_csv(const std::string& path, std::streamsize precision
     return out;
 }
 
-} // namespace pccd_bench
+} // namespace PCCD::testing

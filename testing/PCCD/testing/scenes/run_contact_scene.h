@@ -1,10 +1,10 @@
-// benchmark/scenes/run_contact_scene.h -- plays the deforming contact scene (Bunny_contact_scene.h)
+// PCCD/testing/scenes/run_contact_scene.h -- plays the deforming contact scene (Bunny_contact_scene.h)
 // frame by frame: the deforming object follows the moved points (Deforming_point_cloud_object::
 // set_positions) and is queried against the rigid obstacle; the reference rebuilds a
 // Point_cloud_object from the same points and asks the same query; the exact verdict of the mesh
 // says which frames are grazing. Used by `pccd kinetic-bench --scene bunny-contact` and the
 // deforming-cloud tests (doc/manual/kinetic.md, "Deforming point clouds"; doc/benchmarks.md,
-// "Deforming contact"). Not library code (target pccd_kinetic_scenes; never installed).
+// "Deforming contact"). Not library code (testing/, target PCCD::testing; never installed).
 #pragma once
 
 #include <chrono>
@@ -19,9 +19,9 @@
 #include <PCCD/Kinetic/Deforming_point_cloud_object.h>
 #include <PCCD/Point_cloud_object.h>
 
-#include "Bunny_contact_scene.h"
+#include <PCCD/testing/scenes/Bunny_contact_scene.h>
 
-namespace PCCD {
+namespace PCCD::testing {
 
 /// Options of run_contact_scene.
 struct Contact_run_options {
@@ -75,7 +75,7 @@ struct Contact_run {
     }
 };
 
-namespace internal {
+namespace detail {
 
 inline double cpu_ms_since(std::clock_t start) { return 1000.0 * double(std::clock() - start) / CLOCKS_PER_SEC; }
 inline double wall_ms_since(std::chrono::steady_clock::time_point start)
@@ -89,7 +89,7 @@ struct Matrix_column_map {
     friend Eigen::Vector3d get(const Matrix_column_map& m, std::size_t i) { return m.points->col(Eigen::Index(i)); }
 };
 
-} // namespace internal
+} // namespace detail
 
 /// Plays every frame of `scene` (see the header's comment).
 /// \throws what the objects and queries throw (Deformation_error if the scene breaks the stretch rule).
@@ -102,14 +102,14 @@ inline Contact_run run_contact_scene(const Bunny_contact_scene& scene, const Con
     object_options.outliers.remove = false; // both objects keep every point
     std::vector<std::size_t> obstacle_items(std::size_t(scene.obstacle_points.cols()));
     for (std::size_t i = 0; i < obstacle_items.size(); ++i) obstacle_items[i] = i;
-    const Point_cloud_object<> obstacle(obstacle_items, internal::Matrix_column_map{&scene.obstacle_points},
+    const Point_cloud_object<> obstacle(obstacle_items, detail::Matrix_column_map{&scene.obstacle_points},
                                         object_options);
     Contact_run run;
     const auto rest_start = std::chrono::steady_clock::now();
     Deforming_point_cloud_object<> deforming(
         scene.rest_points, object_options,
         Deformation_options{.stretch_bound = options.stretch_bound, .normals = options.normals, .threads = threads});
-    run.rest_build_ms = internal::wall_ms_since(rest_start);
+    run.rest_build_ms = detail::wall_ms_since(rest_start);
     std::vector<std::size_t> items(std::size_t(scene.rest_points.cols()));
     for (std::size_t i = 0; i < items.size(); ++i) items[i] = i;
 
@@ -121,19 +121,19 @@ inline Contact_run run_contact_scene(const Bunny_contact_scene& scene, const Con
         auto wall = std::chrono::steady_clock::now();
         auto cpu = std::clock();
         const Deformation_report& report = deforming.set_positions(points);
-        frame.update_ms = internal::wall_ms_since(wall);
+        frame.update_ms = detail::wall_ms_since(wall);
         frame.kinetic = do_intersect(deforming, obstacle).intersects;
-        frame.kinetic_ms = internal::wall_ms_since(wall);
-        frame.kinetic_cpu_ms = internal::cpu_ms_since(cpu);
+        frame.kinetic_ms = detail::wall_ms_since(wall);
+        frame.kinetic_cpu_ms = detail::cpu_ms_since(cpu);
         frame.max_stretch = report.max_stretch;
         frame.min_stretch = report.min_stretch;
 
         wall = std::chrono::steady_clock::now();
         cpu = std::clock();
-        const Point_cloud_object<> rebuilt(items, internal::Matrix_column_map{&points}, object_options);
+        const Point_cloud_object<> rebuilt(items, detail::Matrix_column_map{&points}, object_options);
         frame.rebuild = do_intersect(rebuilt, obstacle).intersects;
-        frame.rebuild_ms = internal::wall_ms_since(wall);
-        frame.rebuild_cpu_ms = internal::cpu_ms_since(cpu);
+        frame.rebuild_ms = detail::wall_ms_since(wall);
+        frame.rebuild_cpu_ms = detail::cpu_ms_since(cpu);
 
         const Contact_truth truth = scene.truth_at(frame.time);
         frame.truth = truth.intersecting;
@@ -151,4 +151,4 @@ inline Contact_run run_contact_scene(const Bunny_contact_scene& scene, const Con
     return run;
 }
 
-} // namespace PCCD
+} // namespace PCCD::testing

@@ -1,6 +1,6 @@
-// benchmark/scenes/Random_motion_scene.h -- points in random linear motion (doc/manual/kinetic.md,
+// PCCD/testing/scenes/Random_motion_scene.h -- points in random linear motion (doc/manual/kinetic.md,
 // "Scenes"), the setting of the O(n log n) event bound ("Flightplans"): each pair of flightplans
-// crosses at most once per axis. Not library code (target pccd_kinetic_scenes, never installed).
+// crosses at most once per axis. Not library code (testing/, target PCCD::testing; never installed).
 #pragma once
 
 #include <cmath>
@@ -12,10 +12,10 @@
 #include <Eigen/Core>
 
 #include <PCCD/Error.h>
-#include "Kinetic_scene.h"
+#include <PCCD/testing/scenes/Kinetic_scene.h>
 #include <PCCD/Random.h>
 
-namespace PCCD {
+namespace PCCD::testing {
 
 /// Options of make_random_motion_scene.
 struct Random_motion_options {
@@ -55,4 +55,4 @@ inline Kinetic_scene<Kinetic_point> make_random_motion_scene(const Random_motion
     return scene;
 }
 
-} // namespace PCCD
+} // namespace PCCD::testing

@@ -1,10 +1,10 @@
-// benchmark/scenes/Bunny_contact_scene.h -- the deforming contact scene of `pccd kinetic-bench
+// PCCD/testing/scenes/Bunny_contact_scene.h -- the deforming contact scene of `pccd kinetic-bench
 // --scene bunny-contact`, the deforming-cloud tests and examples/deforming_contact.cpp
 // (doc/manual/kinetic.md, "Deforming point clouds"): a cloud area-sampled from a mesh (CGAL's
 // bunny00.off, or a procedural bumpy sphere without it) twists about its vertical axis, breathes
 // (scales periodically) and sways sideways into and out of a rigid sphere cloud, so that contact
 // switches on and off. The exact verdict of every frame comes from the mesh deformed by the same
-// map against the analytic sphere. Not library code (target pccd_kinetic_scenes; never installed).
+// map against the analytic sphere. Not library code (testing/, target PCCD::testing; never installed).
 #pragma once
 
 #include <algorithm>
@@ -23,11 +23,11 @@
 #include <PCCD/IO/Format.h>
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Sphere_shape.h>
-#include <PCCD/Sampling/Surface_sample.h>
-#include <PCCD/Sampling/sample_triangle_mesh.h>
+#include <PCCD/testing/Sphere_shape.h>
+#include <PCCD/testing/Surface_sample.h>
+#include <PCCD/sample_triangle_mesh.h>
 
-namespace PCCD {
+namespace PCCD::testing {
 
 /// Options of make_bunny_contact_scene.
 struct Bunny_contact_options {
@@ -149,7 +149,7 @@ struct Bunny_contact_scene {
     }
 };
 
-namespace internal {
+namespace detail {
 
 /// A closed lat-long mesh of a bumpy sphere (radius 1 modulated by smooth bumps), `rings` x
 /// `sectors` quads split into triangles, with one vertex at each pole.
@@ -183,7 +183,7 @@ inline void bumpy_sphere_mesh(std::size_t rings, std::size_t sectors, std::vecto
     }
 }
 
-} // namespace internal
+} // namespace detail
 
 /// Builds the scene.
 /// \throws File_error if `off_file` is given but unusable; Invalid_input for a negative duration, a
@@ -200,7 +200,7 @@ inline Bunny_contact_scene make_bunny_contact_scene(const Bunny_contact_options&
     Bunny_contact_scene scene;
     scene.options = o;
     if (o.off_file.empty()) {
-        internal::bumpy_sphere_mesh(48, 96, scene.mesh_vertices, scene.mesh_triangles);
+        detail::bumpy_sphere_mesh(48, 96, scene.mesh_vertices, scene.mesh_triangles);
         scene.name = "bumpy sphere contact";
     } else {
         auto mesh = IO::read_triangle_mesh(o.off_file, IO::Format::off);
@@ -230,4 +230,4 @@ inline Bunny_contact_scene make_bunny_contact_scene(const Bunny_contact_options&
     return scene;
 }
 
-} // namespace PCCD
+} // namespace PCCD::testing

@@ -1,9 +1,9 @@
-// benchmark/scenes/run_kinetic_scene.h -- plays a recorded scene with one of the three update
+// PCCD/testing/scenes/run_kinetic_scene.h -- plays a recorded scene with one of the three update
 // strategies of doc/manual/kinetic.md ("Building and advancing", "Baselines with the same
 // interface": kinetic events, bottom-up refit, full rebuild), answering queries at a fixed rate, and
 // reports the counters and timings of "When to use which". Used by benchmark/kinetic_benchmark.cpp,
 // `pccd kinetic-bench` and the kinetic tests; usable on any recorded Kinetic_scene. Not library code
-// (target pccd_kinetic_scenes, never installed).
+// (testing/, target PCCD::testing; never installed).
 //
 // The queries of a frame (Kinetic_run_options): the overlap with the scene's obstacle (or a range
 // query without one), optionally the self-overlap, and optionally `rays_per_frame` first-hit ray
@@ -31,9 +31,9 @@
 #include <PCCD/Kinetic/Event_queue.h>
 #include <PCCD/Kinetic/Kinetic_AABB_tree.h>
 #include <PCCD/Kinetic/Refit_AABB_tree.h>
-#include "Kinetic_scene.h"
+#include <PCCD/testing/scenes/Kinetic_scene.h>
 
-namespace PCCD {
+namespace PCCD::testing {
 
 /// The update strategy of a run.
 enum class Kinetic_method { kinetic, bottom_up, rebuild };
@@ -100,7 +100,7 @@ struct Kinetic_run_result {
     double cpu_ms_per_frame = 0.0;
 };
 
-namespace internal {
+namespace detail {
 
 /// The rays of Kinetic_run_options::rays_per_frame around `bounds` (see there); deterministic.
 inline std::vector<Kinetic_ray> kinetic_run_rays(const Eigen::AlignedBox3d& bounds, std::size_t count)
@@ -159,7 +159,7 @@ void answer_queries(const Tree& tree, const Obstacle& obstacle, bool overlap_wit
     }
 }
 
-} // namespace internal
+} // namespace detail
 
 /// Plays `scene` from start_time to end_time with `method`, advancing to every query frame
 /// (start + k / query_hz, k >= 1) and answering the queries of `options` there.
@@ -196,7 +196,7 @@ Kinetic_run_result run_kinetic_scene(const Kinetic_scene<P>& scene, Kinetic_meth
         Eigen::AlignedBox3d(bounds.center() - 0.25 * bounds.sizes(), bounds.center() + 0.25 * bounds.sizes()));
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
     std::vector<std::uint32_t> hits;
-    const std::vector<Kinetic_ray> rays = internal::kinetic_run_rays(bounds, options.rays_per_frame);
+    const std::vector<Kinetic_ray> rays = detail::kinetic_run_rays(bounds, options.rays_per_frame);
 
     std::vector<Eigen::Vector3d> positions(options.given_positions ? scene.flightplans.size() : 0);
     auto play = [&](auto& tree) {
@@ -222,7 +222,7 @@ Kinetic_run_result run_kinetic_scene(const Kinetic_scene<P>& scene, Kinetic_meth
             obstacle.advance_to(t);
             const auto t1 = Clock::now();
             const std::clock_t c1 = std::clock();
-            internal::answer_queries(tree, obstacle, overlap_with_obstacle, range, rays, options, r, pairs, hits);
+            detail::answer_queries(tree, obstacle, overlap_with_obstacle, range, rays, options, r, pairs, hits);
             const auto t2 = Clock::now();
             const std::clock_t c2 = std::clock();
             update += std::chrono::duration<double, std::milli>(t1 - t0).count();
@@ -265,4 +265,4 @@ Kinetic_run_result run_kinetic_scene(const Kinetic_scene<P>& scene, Kinetic_meth
     return r;
 }
 
-} // namespace PCCD
+} // namespace PCCD::testing

@@ -1,7 +1,8 @@
-// PCCD/Sampling/sample_triangle_mesh.h -- uniform (area-weighted) random points on a triangle mesh
-// given as a vertex range and index triples, with each sample's triangle normal and triangle index:
-// how PCCD turns the scanned meshes of the benchmarks (doc/algorithms.md, "Benchmark procedure")
-// into point clouds.
+// PCCD/sample_triangle_mesh.h -- uniform (area-weighted) random points on a triangle mesh given as
+// a vertex range and index triples, with each sample's triangle normal and triangle index, and the
+// sampling options (optional Gaussian noise): how PCCD turns the scanned meshes of the benchmarks
+// (doc/algorithms.md, "Benchmark procedure") into point clouds, and how a user turns a mesh into a
+// test cloud.
 #pragma once
 
 #include <algorithm>
@@ -19,10 +20,18 @@
 #include <PCCD/Error.h>
 #include <PCCD/Point_traits.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Surface_sample.h>
 #include <PCCD/internal/finite.h>
 
 namespace PCCD {
+
+/// Options of the surface samplers (sample_triangle_mesh).
+struct Sample_options {
+    /// Standard deviation of the isotropic Gaussian noise added to each sampled point: every
+    /// coordinate gets an independent N(0, noise_sigma^2) offset (length unit of the shape).
+    /// Normals are not perturbed: they stay the exact normals at the noise-free point.
+    /// Default 0 (points exactly on the surface). Must be finite and >= 0.
+    double noise_sigma = 0.0;
+};
 
 /// A sample of N points of a triangle mesh: column i of `points` is point i, column i of `normals`
 /// the unit normal of the triangle it was drawn from (right-hand rule on the triangle's vertex order),
@@ -34,6 +43,22 @@ struct Triangle_mesh_sample {
 };
 
 namespace internal {
+
+inline void check_sample_options(const Sample_options& options)
+{
+    if (!(std::isfinite(options.noise_sigma) && options.noise_sigma >= 0.0))
+        throw Invalid_input(concat("sample options: noise_sigma is ", options.noise_sigma,
+                                   "; it must be finite and >= 0"));
+}
+
+/// Adds N(0, sigma^2) to every coordinate, column after column. Draws nothing when sigma is 0, so the
+/// noise-free positions of a sample do not depend on sigma for a given seed.
+inline void add_gaussian_noise(Eigen::Matrix3Xd& points, double sigma, Random_engine& engine)
+{
+    if (sigma == 0.0) return;
+    for (Eigen::Index i = 0; i < points.cols(); ++i)
+        for (int k = 0; k < 3; ++k) points(k, i) += sigma * standard_normal(engine);
+}
 
 /// Concept helper: a face given as a sized range of integral vertex indices (std::array<int, 3>,
 /// std::vector<std::size_t> as in CGAL's polygon soups, ...). Its size must be 3 at run time.

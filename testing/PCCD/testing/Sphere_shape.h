@@ -1,4 +1,4 @@
-// PCCD/Sampling/Sphere_shape.h -- a sphere with its exact signed distance, closest point and
+// PCCD/testing/Sphere_shape.h -- a sphere with its exact signed distance, closest point and
 // normal, and a uniform-by-area sampler: reference geometry for the tests and benchmarks of
 // doc/algorithms.md, "Benchmark procedure" (and the analytic truth of the exact checks).
 #pragma once
@@ -12,9 +12,9 @@
 
 #include <PCCD/Error.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Surface_sample.h>
+#include <PCCD/testing/Surface_sample.h>
 
-namespace PCCD {
+namespace PCCD::testing {
 
 /// The sphere |x - centre| = radius. Signed distance |x - centre| - radius: positive outside.
 /// Immutable; all member functions are const, O(1) (sample: O(n)), and safe to call concurrently
@@ -24,7 +24,7 @@ public:
     /// \throws Invalid_input if `centre` is not finite or `radius` is not finite and > 0.
     Sphere_shape(const Eigen::Vector3d& centre, double radius) : m_centre(centre), m_radius(radius)
     {
-        internal::check_finite(centre, "sphere centre");
+        detail::check_finite(centre, "sphere centre");
         if (!(std::isfinite(radius) && radius > 0.0))
             throw Invalid_input(internal::concat("sphere radius is ", radius, "; it must be finite and > 0"));
     }
@@ -66,7 +66,7 @@ public:
     /// \throws Invalid_input if the options are invalid.
     Surface_sample sample(std::size_t n, Random_engine& engine, const Sample_options& options = {}) const
     {
-        return internal::sample_shape(*this, n, engine, options);
+        return detail::sample_shape(*this, n, engine, options);
     }
 
 private:
@@ -74,4 +74,4 @@ private:
     double m_radius;
 };
 
-} // namespace PCCD
+} // namespace PCCD::testing

@@ -1,4 +1,4 @@
-// PCCD/Sampling/Parallel_sheets_shape.h -- two parallel rectangles facing away from each other at a
+// PCCD/testing/Parallel_sheets_shape.h -- two parallel rectangles facing away from each other at a
 // given gap, the two faces of a thin plate without its rim: reference geometry for the tests of
 // doc/algorithms.md, "Euclidean and geodesic distance" and "Benchmark procedure" (a thin gap across
 // which a Euclidean kernel bleeds and a geodesic kernel must not).
@@ -12,10 +12,10 @@
 
 #include <PCCD/Error.h>
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/Plane_patch_shape.h>
-#include <PCCD/Sampling/Surface_sample.h>
+#include <PCCD/testing/Plane_patch_shape.h>
+#include <PCCD/testing/Surface_sample.h>
 
-namespace PCCD {
+namespace PCCD::testing {
 
 /// Two parallel rectangles a distance `gap` apart, with outward normals: with n = (e1 x e2) / |e1 x e2|,
 /// sheet 0 is the rectangle { corner + s e1 + t e2 } facing -n and sheet 1 is sheet 0 moved by
@@ -69,7 +69,7 @@ public:
     /// \throws Invalid_input if the options are invalid.
     Surface_sample sample(std::size_t n, Random_engine& engine, const Sample_options& options = {}) const
     {
-        return internal::sample_shape(*this, n, engine, options);
+        return detail::sample_shape(*this, n, engine, options);
     }
 
 private:
@@ -94,4 +94,4 @@ private:
     double m_gap;
 };
 
-} // namespace PCCD
+} // namespace PCCD::testing

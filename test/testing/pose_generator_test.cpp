@@ -1,8 +1,8 @@
-// The benchmark poses (PCCD/Sampling/pose_generator.h): the layout of the configurations,
+// The benchmark poses (PCCD/testing/pose_generator.h): the layout of the configurations,
 // determinism, and the uniformity (Haar measure) of the random rotations by chi-square tests with
 // fixed seeds.
 #include <PCCD/Random.h>
-#include <PCCD/Sampling/pose_generator.h>
+#include <PCCD/testing/pose_generator.h>
 
 #include <catch2/catch.hpp>
 
@@ -18,7 +18,7 @@ using namespace sampling_test;
 
 TEST_CASE("poses: layout of the benchmark configurations", "[sampling][poses]")
 {
-    const auto poses = PCCD::generate_benchmark_poses({.rotations_per_distance = 20, .seed = 7});
+    const auto poses = PCCD::testing::generate_benchmark_poses({.rotations_per_distance = 20, .seed = 7});
     REQUIRE(poses.size() == 13 * 20);
     for (std::size_t i = 0; i < poses.size(); ++i) {
         const auto& p = poses[i];
@@ -33,17 +33,17 @@ TEST_CASE("poses: layout of the benchmark configurations", "[sampling][poses]")
         }
         CHECK((p.pose_a.rotation() - p.pose_b.rotation()).norm() > 1e-6); // independent rotations
     }
-    const auto default_poses = PCCD::generate_benchmark_poses();
+    const auto default_poses = PCCD::testing::generate_benchmark_poses();
     CHECK(default_poses.size() == 13 * 100);
-    CHECK(PCCD::default_benchmark_distances().back() == 3.0);
+    CHECK(PCCD::testing::default_benchmark_distances().back() == 3.0);
 }
 
 TEST_CASE("poses: deterministic for a seed, independent of the distances asked for", "[sampling][poses]")
 {
-    const auto full = PCCD::generate_benchmark_poses({.rotations_per_distance = 10, .seed = 42});
-    const auto again = PCCD::generate_benchmark_poses({.rotations_per_distance = 10, .seed = 42});
-    const auto subset = PCCD::generate_benchmark_poses({.distances = {1.5}, .rotations_per_distance = 3, .seed = 42});
-    const auto other_seed = PCCD::generate_benchmark_poses({.rotations_per_distance = 10, .seed = 43});
+    const auto full = PCCD::testing::generate_benchmark_poses({.rotations_per_distance = 10, .seed = 42});
+    const auto again = PCCD::testing::generate_benchmark_poses({.rotations_per_distance = 10, .seed = 42});
+    const auto subset = PCCD::testing::generate_benchmark_poses({.distances = {1.5}, .rotations_per_distance = 3, .seed = 42});
+    const auto other_seed = PCCD::testing::generate_benchmark_poses({.rotations_per_distance = 10, .seed = 43});
     REQUIRE(full.size() == again.size());
     for (std::size_t i = 0; i < full.size(); ++i) {
         CHECK(full[i].pose_a.matrix() == again[i].pose_a.matrix());
@@ -54,13 +54,13 @@ TEST_CASE("poses: deterministic for a seed, independent of the distances asked f
     for (std::size_t r = 0; r < 3; ++r) {
         CHECK(subset[r].pose_a.matrix() == full[60 + r].pose_a.matrix());
         CHECK(subset[r].pose_b.matrix() == full[60 + r].pose_b.matrix());
-        const auto single = PCCD::benchmark_pose(42, 1.5, r);
+        const auto single = PCCD::testing::benchmark_pose(42, 1.5, r);
         CHECK(single.pose_b.matrix() == full[60 + r].pose_b.matrix());
     }
     // Different distances and indices get different rotations.
     CHECK(full[0].pose_a.matrix() != full[1].pose_a.matrix());
     CHECK(full[0].pose_a.matrix() != full[10].pose_a.matrix());
-    CHECK(PCCD::benchmark_pose(42, -0.0, 0).pose_a.matrix() == full[0].pose_a.matrix());
+    CHECK(PCCD::testing::benchmark_pose(42, -0.0, 0).pose_a.matrix() == full[0].pose_a.matrix());
 }
 
 TEST_CASE("poses: random rotations are uniform (Haar)", "[sampling][poses][statistics]")
@@ -71,7 +71,7 @@ TEST_CASE("poses: random rotations are uniform (Haar)", "[sampling][poses][stati
     const int bins = 18;
     std::vector<double> angles(bins, 0.0), expected(bins);
     for (int i = 0; i < m; ++i) {
-        const Eigen::Matrix3d r = PCCD::uniform_random_rotation(rng);
+        const Eigen::Matrix3d r = PCCD::testing::uniform_random_rotation(rng);
         mean += r / m;
         mean_square += r.cwiseAbs2() / m;
         const double angle = std::acos(std::clamp((r.trace() - 1.0) / 2.0, -1.0, 1.0));
@@ -93,11 +93,11 @@ TEST_CASE("poses: random rotations are uniform (Haar)", "[sampling][poses][stati
 
 TEST_CASE("poses: invalid options are rejected", "[sampling][poses][errors]")
 {
-    CHECK_THROWS_WITH(PCCD::generate_benchmark_poses({.distances = {}}), Catch::Contains("distance list is empty"));
-    CHECK_THROWS_WITH(PCCD::generate_benchmark_poses({.rotations_per_distance = 0}),
+    CHECK_THROWS_WITH(PCCD::testing::generate_benchmark_poses({.distances = {}}), Catch::Contains("distance list is empty"));
+    CHECK_THROWS_WITH(PCCD::testing::generate_benchmark_poses({.rotations_per_distance = 0}),
                       Catch::Contains("rotations_per_distance"));
-    CHECK_THROWS_WITH(PCCD::generate_benchmark_poses({.distances = {0.0, std::numeric_limits<double>::infinity()}}),
+    CHECK_THROWS_WITH(PCCD::testing::generate_benchmark_poses({.distances = {0.0, std::numeric_limits<double>::infinity()}}),
                       Catch::Contains("distance 1 is inf"));
-    CHECK_THROWS_AS(PCCD::benchmark_pose(1, std::numeric_limits<double>::quiet_NaN(), 0), PCCD::Invalid_input);
+    CHECK_THROWS_AS(PCCD::testing::benchmark_pose(1, std::numeric_limits<double>::quiet_NaN(), 0), PCCD::Invalid_input);
 }
 
