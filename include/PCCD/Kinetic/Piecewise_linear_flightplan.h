@@ -1,7 +1,7 @@
 // PCCD/Kinetic/Piecewise_linear_flightplan.h -- a Flightplan model through key frames
 // (doc/manual/kinetic.md, "Flightplans"): linear interpolation between consecutive key positions,
 // at rest before the first and after the last key. This is what a simulation or a recorded
-// animation produces (the scenes of benchmark/scenes/ record it).
+// animation produces (the scenes of testing/PCCD/testing/scenes/ record it).
 #pragma once
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 // PCCD/internal/timing.h -- elapsed wall time on std::chrono::steady_clock, in milliseconds,
 // microseconds or seconds, for the stage timings the library reports (Point_cloud_object's
 // timings(), doc/manual/surface.md; the kinetic scenes' frame times, doc/manual/kinetic.md). The
-// benchmark and tool helpers (benchmark/common/timing.h) reuse these rather than keep copies.
+// benchmark and tool helpers (testing/PCCD/testing/timing.h) reuse these rather than keep copies.
 #pragma once
 
 #include <chrono>
