@@ -117,8 +117,8 @@ public:
     {
     }
 
-    /// From the points in the columns of a 3 x N matrix (Surface_sample::points,
-    /// Triangle_mesh_sample::points, ...), as the constructors above.
+    /// From the points in the columns of a 3 x N matrix (Triangle_mesh_sample::points,
+    /// an Eigen expression, ...), as the constructors above.
     /// \throws Invalid_input as above.
     explicit Point_cloud_object(const Eigen::Matrix3Xd& points, const Point_cloud_object_options& options = {})
         : Point_cloud_object(timed_cloud(points, options), std::nullopt, options)

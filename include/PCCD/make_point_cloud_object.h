@@ -1,6 +1,6 @@
 // PCCD/make_point_cloud_object.h -- a preprocessed Point_cloud_object straight from the 3 x N
-// coordinate matrices that PCCD's samplers and most Eigen code produce (Surface_sample::points,
-// Triangle_mesh_sample::points), with or without normals, as a function whose kernel defaults and
+// coordinate matrices that PCCD's samplers and most Eigen code produce (sample_triangle_mesh()
+// gives in Triangle_mesh_sample::points), with or without normals, as a function whose kernel defaults and
 // whose result type `auto` can hold: it calls Point_cloud_object's matrix constructors.
 // doc/manual/surface.md, "One call: Point_cloud_object".
 #pragma once
