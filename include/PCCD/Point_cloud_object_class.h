@@ -252,8 +252,6 @@ public:
     /// @}
 
 private:
-    using Clock = std::chrono::steady_clock;
-
     struct Data {
         Point_cloud<K> cloud;
         std::shared_ptr<const Proximity_graph> graph;

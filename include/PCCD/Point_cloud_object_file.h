@@ -262,7 +262,7 @@ Point_cloud_object<K> Point_cloud_object<K>::load_file(const std::string& path, 
         in.fail("the geodesic section does not have one vertex per point");
 
     try {
-        const auto start = Clock::now();
+        const auto start = internal::Steady_clock::now();
         Point_cloud<K> cloud(typename Point_cloud<K>::Coordinates(points.template cast<FT>()));
         timings.kd_tree = internal::ms_since(start);
         const Gaussian_weight weight(h, theta);
