@@ -115,4 +115,8 @@ def test_the_readme_states_the_measured_test_time(source_dir):
     readme = (source_dir / "README.md").read_text()
     paragraph = readme[readme.index("Build and run the whole test suite"):readme.index("PCCD is a header-only")]
     assert "took 10 minutes" not in paragraph  # the figure measured before the suite grew
-    assert re.search(r"15 minutes", paragraph), "the time a fresh clone took"
+    # A fresh clone took 15 minutes for a user on a 2-core machine: the README states its own
+    # measurement, and never less than that.
+    found = re.search(r"fresh clone.*?took (\d+) minutes", paragraph, re.S)
+    assert found, "the README states the time a fresh clone took"
+    assert int(found.group(1)) >= 15, f"the README states {found.group(1)} minutes, less than a user measured"

@@ -51,18 +51,35 @@ void traverse_pairs(const TreeA& a, std::uint32_t root_a, const TreeB& b, std::u
                     OnLeafPair&& on_leaf_pair)
 {
     if (root_a == no_node || root_b == no_node) return;
+    // A node's box may be computed on demand (a kinetic tree evaluates its flightplans): the last box
+    // of each tree is kept, since consecutive pairs of the walk mostly share the node not opened.
     struct Traits {
         const TreeA& a;
         const TreeB& b;
         Descend& descend;
         OnLeafPair& on_leaf_pair;
+        std::uint32_t last_a = no_node, last_b = no_node;
+        Eigen::AlignedBox3d box_a{}, box_b{};
+
         bool go_further() const { return true; }
-        bool enter(std::uint32_t na, std::uint32_t nb) { return descend(na, nb, a.box(na), b.box(nb)); }
+        bool enter(std::uint32_t na, std::uint32_t nb)
+        {
+            if (na != last_a) {
+                last_a = na;
+                box_a = a.box(na);
+            }
+            if (nb != last_b) {
+                last_b = nb;
+                box_b = b.box(nb);
+            }
+            return descend(na, nb, box_a, box_b);
+        }
         Pair_split split(std::uint32_t na, std::uint32_t nb) const
         {
             const bool leaf_a = a.is_leaf(na), leaf_b = b.is_leaf(nb);
             if (leaf_a && leaf_b) return Pair_split::leaves;
-            const bool open_a = !leaf_a && (leaf_b || a.box(na).diagonal().squaredNorm() >= b.box(nb).diagonal().squaredNorm());
+            // box_a and box_b are the pair's, set by enter() just before.
+            const bool open_a = !leaf_a && (leaf_b || box_a.diagonal().squaredNorm() >= box_b.diagonal().squaredNorm());
             return open_a ? Pair_split::first : Pair_split::second;
         }
         void leaf_pair(std::uint32_t na, std::uint32_t nb) { on_leaf_pair(na, nb); }
