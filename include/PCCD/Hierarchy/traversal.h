@@ -3,15 +3,15 @@
 // hierarchy"; doc/manual/hierarchy.md "Traversals"). A query is a traits class: it tests nodes (or
 // node pairs), acts at leaves (or leaf pairs), chooses which children come first and may stop the
 // walk, the way CGAL's AABB_tree::traversal(query, traits) separates the walk from what it is for.
-// The point queries (within_reach, nearest_point), the reach traversal of two objects, the
-// overlapping leaves of the flat traversal and the kinetic and refit trees' overlap, range and ray
-// queries are traits of these two functions.
+// The point queries (within_reach, nearest_point; descend_to_near_point on descend(), a descent
+// without a stack), the reach traversal of two objects, the overlapping leaves of the flat traversal
+// and the kinetic and refit trees' overlap, range and ray queries are traits of these functions.
 #pragma once
 
 #include <algorithm>
 #include <cstddef>
-#include <type_traits>
 #include <cstdint>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -150,17 +150,17 @@ Walk_counters traverse(const First& first, Index root_first, const Second& secon
         switch (traits.split(i, j)) {
         case Pair_split::leaves: traits.leaf_pair(i, j); break;
         case Pair_split::first: {
-            Index near = first.left(i), far = first.right(i);
-            if (!traits.first_left_first(i, j)) std::swap(near, far);
-            stack.push({far, j});
-            stack.push({near, j});
+            Index sooner = first.left(i), later = first.right(i); // not near/far: macros on some platforms
+            if (!traits.first_left_first(i, j)) std::swap(sooner, later);
+            stack.push({later, j});
+            stack.push({sooner, j});
             break;
         }
         case Pair_split::second: {
-            Index near = second.left(j), far = second.right(j);
-            if (!traits.second_left_first(i, j)) std::swap(near, far);
-            stack.push({i, far});
-            stack.push({i, near});
+            Index sooner = second.left(j), later = second.right(j);
+            if (!traits.second_left_first(i, j)) std::swap(sooner, later);
+            stack.push({i, later});
+            stack.push({i, sooner});
             break;
         }
         case Pair_split::both: {
