@@ -42,11 +42,19 @@ struct Overlapping_leaves_traits {
     double margin;
     double b_stop_size;
     Visitor& visit;
+    /// |R| of the motion, once per walk rather than once per node pair.
+    Eigen::Matrix3d abs_r = a_to_b.rotation().cwiseAbs();
     std::size_t leaf_pairs = 0;
 
     using Index = Point_cloud_hierarchy::Index;
     bool go_further() const { return true; }
-    bool enter(Index i, Index j) const { return boxes_may_overlap(a.node(i).box, a_to_b, b.node(j).box, margin); }
+    /// boxes_may_overlap() with |R| computed once.
+    bool enter(Index i, Index j) const
+    {
+        const Eigen::AlignedBox3d& box_a = a.node(i).box;
+        return grown_boxes_may_overlap(box_a, a_to_b.rotation(), abs_r, a_to_b.transform_point(box_a.center()), 0.0,
+                                       b.node(j).box, margin);
+    }
     Pair_split split(Index i, Index j) const
     {
         const auto& na = a.node(i);
