@@ -137,13 +137,21 @@ struct Proximity_query {
             // No sample lies inside the other object: the surfaces cross by less than the sampling
             // resolution; the contact normal is that of the crossing.
             const Eigen::Vector3d x = r.intersection_points.front().position;
-            const Surface_evaluation ea = state.evaluate(pa, x), eb = state.evaluate(pb, x);
-            if (ea.defined() && eb.defined()) {
-                const Eigen::Vector3d n = pa.to_world.rotation() * ea.normal - pb.to_world.rotation() * eb.normal;
-                if (n.norm() > 0.0) r.contact_normal = n.normalized();
-            }
+            r.contact_normal = crossing_normal(x);
             r.point_a = r.point_b = x;
         }
+    }
+
+    /// The direction in which B must move to leave A at a point x where the surfaces cross: n_A - n_B
+    /// normalized (NaN where a surface is undefined or the normals cancel).
+    Eigen::Vector3d crossing_normal(const Eigen::Vector3d& x)
+    {
+        const Surface_evaluation ea = state.evaluate(pa, x), eb = state.evaluate(pb, x);
+        if (ea.defined() && eb.defined()) {
+            const Eigen::Vector3d n = pa.to_world.rotation() * ea.normal - pb.to_world.rotation() * eb.normal;
+            if (n.norm() > 0.0) return n.normalized();
+        }
+        return Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
     }
 };
 
