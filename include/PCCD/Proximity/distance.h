@@ -99,7 +99,10 @@ struct Proximity_query {
         };
         const Rigid_transform_3<double> a_to_b = pb.from_world * pa.to_world;
         Closest_pairs_traits<decltype(stop)> traits(ha, hb, a_to_b, k, bound, walk_slack, stop);
-        if (!ha.empty() && !hb.empty()) {
+        // The local search's first pair tightens the pruning of an unbounded walk; under a finite
+        // bound (max_distance, a clearance margin) the bound already prunes, and the search would
+        // cost more than it saves (measured: within_distance 1.3-1.5x -> 1.1-1.3x do_intersect).
+        if (!ha.empty() && !hb.empty() && !std::isfinite(bound)) {
             const Point_pair seed = local_closest_pair(ha, hb, a_to_b);
             if (seed.distance < bound) traits.seed(seed);
         }
