@@ -1,7 +1,7 @@
 """The type stubs python/pccd/_pccd.pyi (installed next to the module, with py.typed): they parse,
 name every public attribute of the module and of its classes (Object, Result and the proximity
-queries' results), and nothing that does not
-exist; the functions' parameters match the module's signatures where pybind11 states them."""
+queries' results), and nothing that does not exist; the functions' parameters match the module's
+signatures where pybind11 states them."""
 
 import ast
 import pathlib
