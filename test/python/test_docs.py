@@ -1,8 +1,8 @@
 """Docs that cannot drift: every ```python block of doc/manual/python.md, of the Python section of
-doc/manual/proximity-cli-python.md and of README.md runs,
-in order, as one session per document, in a scratch directory holding libcgal-demo's bunny00.off
-and elephant.off (the files the blocks read); a ```text block right after a ```python block is
-that block's output, compared line by line. The quickstart's output shown in the manual is the
+doc/manual/proximity-cli-python.md and of README.md runs, in order, as one session per document,
+in a scratch directory holding libcgal-demo's bunny00.off and elephant.off (the files the blocks
+read); a ```text block right after a ```python block is that block's output, compared line by
+line. The quickstart's output shown in the manual is the
 output of examples/python/quickstart.py; the README's test-time statement is the measured one."""
 
 import contextlib
