@@ -70,7 +70,7 @@ def test_the_distance_does_not_depend_on_which_object_moves(ball):
     for d in (one, other):
         assert d.distance == pytest.approx(0.4, rel=0.03)
     assert np.dot(unit(one.point_b - one.point_a), direction) > 0.99
-    assert np.dot(unit(other.point_a - other.point_b), direction) > 0.99
+    assert np.dot(unit(other.point_b - other.point_a), direction) > 0.99  # A moved by -centre: still towards B
 
 
 def test_a_4x4_pose_answers_as_its_3x4_form(ball):
