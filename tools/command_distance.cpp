@@ -1,5 +1,5 @@
 // pccd distance A B [--transform-a 12 numbers] [--transform-b 12 numbers] [--orthonormalize] [--normalize]
-//   [--penetration] [--max-distance D] [--tolerance T] [--relative-tolerance R] [--budget-us T]
+//   [--penetration] [--max-distance D] [--tolerance T] [--relative-tolerance R] [--budget-us T] [--max-node-pairs N]
 //   [--seed S] [--margin M | --contacts [--max-contacts N]] [--json] [--png F] [--cases FILE]:
 // how far apart two posed point clouds are (PCCD::distance: the distance between their implicit
 // surfaces, an honest interval around it, the witness points and normals, and with --penetration
@@ -47,6 +47,7 @@ struct Distance_cli_options {
     std::string tolerance;          // empty: automatic
     std::string relative_tolerance; // empty: 0
     std::string budget_us;          // empty or 0: none
+    std::size_t max_node_pairs = 0; // 0: none
     std::string margin;             // set: within_distance
     bool contacts = false;
     std::size_t max_contacts = PCCD::Distance_options{}.max_contacts;
@@ -80,6 +81,7 @@ PCCD::Distance_options distance_options(const Distance_cli_options& o)
         const double us = option_number(o.budget_us, "--budget-us", false);
         if (us != 0.0) options.max_time_us = us; // 0: no budget, as for pccd collide
     }
+    if (o.max_node_pairs != 0) options.max_node_pairs = o.max_node_pairs;
     if (o.max_contacts == 0) throw PCCD::Invalid_input("--max-contacts 0: must be >= 1");
     options.max_contacts = o.max_contacts;
     PCCD::internal::check_options(options, "pccd distance");
@@ -398,6 +400,9 @@ void register_distance(CLI::App& app)
     cmd->add_option("--budget-us", o->budget_us,
                     "Time budget per query in microseconds (>= 0; default 0: none); the answer then depends on the "
                     "machine's speed");
+    cmd->add_option("--max-node-pairs", o->max_node_pairs,
+                    "Budget on the node pairs of the closest-pair walk (deterministic; default 0: none); the "
+                    "interval [lower_bound, upper_bound] narrows as it grows");
     auto* margin = cmd->add_option("--margin", o->margin,
                                    "Answer within_distance instead: whether the surfaces come closer than M (>= 0)");
     auto* contacts = cmd->add_flag("--contacts", o->contacts,

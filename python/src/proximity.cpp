@@ -85,6 +85,7 @@ Distance_arguments distance_arguments(const py::kwargs& kwargs, bool batch, cons
             read_argument(o.max_time_us, value, function, key);
             if (o.max_time_us && *o.max_time_us == 0.0) o.max_time_us.reset(); // 0: none, as elsewhere
         }
+        else if (is("max_node_pairs")) read_argument(o.max_node_pairs, value, function, key);
         else if (is("penetration")) read_argument(o.penetration, value, function, key);
         else if (is("max_contacts")) read_argument(o.max_contacts, value, function, key);
         else if (is("candidates")) read_argument(o.candidates, value, function, key);
@@ -188,6 +189,9 @@ max_f_evaluations : int, optional
     status 'undecided' when the intersection query could not decide.
 max_time_us : float, optional
     Time budget in microseconds; None (default) or 0: none (as ``pccd distance --budget-us 0``).
+max_node_pairs : int, optional
+    Budget on the node pairs of the closest-pair walk (deterministic); None (default): none. The
+    interval [lower_bound, upper_bound] narrows as it grows.
 penetration : bool, optional
     For intersecting poses, also measure the penetration depths (depth, depth_a, depth_b) and the
     contact normal (default False).

@@ -113,6 +113,18 @@ def test_beyond_max_distance_only_farther_than_is_reported(ball):
     assert near.distance == pytest.approx(1.0, rel=0.03)
 
 
+def test_a_node_pair_budget_gives_an_honest_interval_that_narrows(ball):
+    gap = 0.5
+    widths = []
+    for budget in (1, 4, 16, 10**6):
+        r = pccd.distance(ball, None, ball, shifted(2 * RADIUS + gap), max_node_pairs=budget)
+        assert r.status == "separate"
+        assert r.lower_bound <= gap * 1.03 and r.upper_bound >= gap * 0.97, (budget, r)
+        widths.append(r.upper_bound - r.lower_bound)
+    assert widths[-1] <= widths[0]
+    assert math.isfinite(widths[-1])
+
+
 def test_within_distance_answers_against_the_gap(ball):
     far = shifted(1.5)  # gap 0.5
     yes = pccd.within_distance(ball, None, ball, far, 0.6)
@@ -216,6 +228,7 @@ def test_distance_many_of_nothing():
         (dict(max_distance=math.inf), "max_distance"),
         (dict(max_time_us=-3.0), "max_time_us"),
         (dict(max_f_evaluations=0), "max_f_evaluations"),
+        (dict(max_node_pairs=0), "max_node_pairs"),
         (dict(max_contacts=0), "max_contacts"),
         (dict(candidates=0), "candidates"),
         (dict(traversal="sideways"), "traversal"),
