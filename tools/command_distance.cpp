@@ -202,7 +202,7 @@ std::string text_value(const nlohmann::ordered_json& v)
 }
 
 /// The text summary: one "name: value" line per result field (nan and inf where the JSON has
-/// null), the counters on one line.
+/// null), the proximity counters on one line, those of the intersection query on the next.
 void print_summary(const nlohmann::ordered_json& r, const nlohmann::ordered_json& result,
                    const std::vector<std::pair<std::string, double>>& raw_numbers)
 {
@@ -240,7 +240,11 @@ void print_summary(const nlohmann::ordered_json& r, const nlohmann::ordered_json
         std::printf("intersection_points: %s\n", text_value(result["intersection_points"][0]).c_str());
     std::printf("counters:");
     for (const auto& [name, value] : result["counters"].items())
-        std::printf(" %s %zu", name.c_str(), value.get<std::size_t>());
+        if (!name.starts_with("intersection_")) std::printf(" %s %zu", name.c_str(), value.get<std::size_t>());
+    std::printf("\nintersection counters:");
+    for (const auto& [name, value] : result["counters"].items())
+        if (name.starts_with("intersection_"))
+            std::printf(" %s %zu", name.substr(std::string("intersection_").size()).c_str(), value.get<std::size_t>());
     std::printf("\nquery_us: %.1f\n", r["query_us"].get<double>());
 }
 

@@ -272,7 +272,8 @@ elseif(CASE STREQUAL "distance_text")
                         "\nstatus: separate\n" "\ndistance: (0\\.9[789]|1\\.0[0-2])[0-9]*\n" "\nlower_bound: "
                         "\nupper_bound: " "\npoint_a: .[-0-9.e]+, [-0-9.e]+, [-0-9.e]+.\n" "\npoint_b: ."
                         "\nnormal_a: ." "\nnormal_b: ." "\ndepth: nan\n" "\ndepth_a: nan\n" "\ndepth_b: nan\n"
-                        "\ncontact_normal: ." "\ncounters: node_pairs [0-9]+ leaf_pairs [0-9]+" "\nquery_us: [0-9.]+\n")
+                        "\ncontact_normal: ." "\ncounters: node_pairs [0-9]+ leaf_pairs [0-9]+"
+                        "\nintersection counters: f_evaluations [0-9]+ " "\nquery_us: [0-9.]+\n")
 elseif(CASE STREQUAL "distance_penetration")
   # Two unit spheres 1 apart intersect: distance 0; with --penetration the depths are measured
   # (numbers, not null), without it they are not (null).
