@@ -284,6 +284,14 @@ elseif(CASE STREQUAL "distance_penetration")
                  "\"depth_b\": [0-9]" "\"contact_normal\": .\n")
   file(WRITE ${WORK}/distance_penetration.json "${PCCD_STDOUT}")
   pccd_reference(json sphere.xyz sphere.xyz ${shift_1_csv} distance_penetration.json --penetration)
+  # Centres 1.5 apart: A's point (1, 0, 0) lies 0.5 from B's centre, 0.5 deep inside B, and no
+  # point of either sphere lies deeper in the other: depth 0.5; B leaves A along +x.
+  pccd_run(OK ARGS distance sphere.xyz sphere.xyz --transform-b 1 0 0 1.5 0 1 0 0 0 0 1 0 --penetration --json
+           MATCH "\"status\": \"intersecting\"")
+  pccd_json_number(depth "${PCCD_STDOUT}" depth)
+  pccd_expect_between(${depth} 0.475 0.525 "the penetration depth of unit spheres 1.5 apart")
+  string(JSON normal_x GET "${PCCD_STDOUT}" contact_normal 0)
+  pccd_expect_between(${normal_x} 0.95 1.0 "the contact normal's x")
 elseif(CASE STREQUAL "distance_max_distance")
   # 1 apart: beyond --max-distance 0.5 only "farther than" is reported (distance inf: null in the
   # JSON, "inf" in the text), with a lower bound above the limit; within 2 the distance is measured.
