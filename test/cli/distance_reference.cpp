@@ -3,6 +3,7 @@
 // within_distance), and compared with what the tool printed. Used by run_cli_test.cmake:
 //
 //   distance_reference json A B POSE_B CLI.json [--seed S] [--penetration] [--max-distance D] [--margin M]
+//                      [--tolerance T] [--max-node-pairs N]
 //   distance_reference cases A B CASES.csv CLI.csv [--seed S]
 //
 // POSE_B: 12 numbers in one argument, separated by spaces or commas (3x4 row-major); A is at the
@@ -106,7 +107,7 @@ void check_counters(const nlohmann::json& j, const PCCD::Distance_counters& c)
 int usage()
 {
     std::cerr << "usage: distance_reference json A B POSE_B CLI.json [--seed S] [--penetration] [--max-distance D] "
-                 "[--margin M]\n       distance_reference cases A B CASES.csv CLI.csv [--seed S]\n";
+                 "[--margin M] [--tolerance T] [--max-node-pairs N]\n       distance_reference cases A B CASES.csv CLI.csv [--seed S]\n";
     return 2;
 }
 
@@ -125,6 +126,8 @@ int main(int argc, char** argv)
         else if (a == "--penetration") options.penetration = true;
         else if (a == "--max-distance" && i + 1 < argc) options.max_distance = std::stod(argv[++i]);
         else if (a == "--margin" && i + 1 < argc) has_margin = true, margin = std::stod(argv[++i]);
+        else if (a == "--tolerance" && i + 1 < argc) options.absolute_tolerance = std::stod(argv[++i]);
+        else if (a == "--max-node-pairs" && i + 1 < argc) options.max_node_pairs = std::stoull(argv[++i]);
         else return usage();
     }
     const PCCD::Point_cloud_object<> a(PCCD::IO::read_points(argv[2]));

@@ -305,6 +305,22 @@ elseif(CASE STREQUAL "distance_max_distance")
            STDOUT_MATCH "\ndistance: inf\n")
   pccd_run(OK ARGS distance sphere.xyz sphere.xyz --transform-b ${shift_3} --max-distance 2 --json
            MATCH "\"distance\": (0\\.9[789]|1\\.0[0-2])[0-9]*,")
+  # A budget of node pairs: the interval stays honest about the gap 1 (and narrows as it grows);
+  # --tolerance reaches the refinement. Both as the C++ API answers.
+  foreach(budget 1 8)
+    pccd_run(OK ARGS distance sphere.xyz sphere.xyz --transform-b ${shift_3} --max-node-pairs ${budget} --json
+             MATCH "\"status\": \"separate\"")
+    file(WRITE ${WORK}/distance_budget.json "${PCCD_STDOUT}")
+    pccd_json_number(lower "${PCCD_STDOUT}" lower_bound)
+    pccd_expect_between(${lower} 0 1.03 "lower_bound with --max-node-pairs ${budget}")
+    pccd_reference(json sphere.xyz sphere.xyz ${shift_3_csv} distance_budget.json --max-node-pairs ${budget})
+  endforeach()
+  pccd_run(OK ARGS distance sphere.xyz sphere.xyz --transform-b ${shift_3} --tolerance 0.0005 --json
+           MATCH "\"absolute_tolerance\": 0.0005")
+  file(WRITE ${WORK}/distance_tolerance.json "${PCCD_STDOUT}")
+  pccd_json_number(distance "${PCCD_STDOUT}" distance)
+  pccd_expect_between(${distance} 0.97 1.03 "the distance with --tolerance 0.0005")
+  pccd_reference(json sphere.xyz sphere.xyz ${shift_3_csv} distance_tolerance.json --tolerance 0.0005)
 elseif(CASE STREQUAL "distance_margin")
   # within_distance: surfaces 1 apart are within 1.5, not within 0.5.
   pccd_run(OK ARGS distance sphere.xyz sphere.xyz --transform-b ${shift_3} --margin 1.5 --json
