@@ -6,7 +6,7 @@
 //
 //   distance_benchmark [--models bunny00.off,elephant.off,armadillo.off,ChineseDragon-10kv.off]
 //                      [--points 30000] [--rotations 20] [--repetitions 5] [--seed 1]
-//                      [--margin 2] [--csv OUT]
+//                      [--margin 2] [--evict 64] [--csv OUT]
 //
 // Per model: the mesh is normalized into [-1, 1]^3, FCL's OBBRSS hierarchy is built on it, and a
 // cloud of --points points is sampled by area and preprocessed with default options. Per pose (d =
@@ -16,9 +16,12 @@
 //   within       PCCD::within_distance() with a margin of --margin mean spacings of the cloud;
 //   do_intersect PCCD::do_intersect() with the options the two queries above decide the status with.
 // Times are this thread's CPU time in us. Cold: each method once per pose, the four interleaved per
-// pose in the order above on even poses and reversed on odd ones (so each method follows each
-// other equally often: the same cache state for all). Warm: then the median of --repetitions runs
-// in a row per method. Printed per model: mean and median per method, cold and warm, over all poses
+// pose (the order above on even poses, reversed on odd ones), each run after a sweep over a buffer
+// of --evict MiB (default 64, twice the L3 cache of the benchmark machine) that evicts what the
+// previous method left in the caches: the three PCCD queries share their data and their first
+// step (do_intersect), so without it the method run second on a pose would find the first one's
+// data cached (--evict 0: no sweep). Warm: then the median of --repetitions runs in a row per
+// method. Printed per model: mean and median per method, cold and warm, over all poses
 // and over the separate ones (FCL distance > 0); the ratios distance / fcl and within /
 // do_intersect; the mean counters; and the accuracy of PCCD's distance against FCL's (exact on the
 // mesh) in mean spacings, on the poses both call separate.
@@ -42,6 +45,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -60,6 +64,7 @@ struct Arguments {
     int repetitions = 5;
     std::uint64_t seed = 1;
     double margin_spacings = 2.0;
+    std::size_t evict_mib = 64;
     std::string csv;
 };
 
@@ -85,6 +90,7 @@ Arguments parse(int argc, char** argv)
         else if (key == "--repetitions") a.repetitions = std::stoi(value);
         else if (key == "--seed") a.seed = std::stoull(value);
         else if (key == "--margin") a.margin_spacings = std::stod(value);
+        else if (key == "--evict") a.evict_mib = std::stoul(value);
         else if (key == "--csv") a.csv = value;
         else throw std::invalid_argument("unknown option " + key);
     }
@@ -153,6 +159,25 @@ Outcome outcome_of(const PCCD::Intersection_result& r)
     o.intersection_f_evaluations = double(r.counters.f_evaluations);
     return o;
 }
+
+/// Evicts the caches: reads and writes every cache line of a buffer larger than the last-level
+/// cache. Returns a value that depends on the buffer, so the sweep cannot be optimized away.
+class Cache_evictor {
+public:
+    explicit Cache_evictor(std::size_t mib) : m_buffer(mib * 1024 * 1024 / sizeof(std::uint64_t), 1) {}
+    std::uint64_t sweep()
+    {
+        std::uint64_t sum = 0;
+        for (std::size_t i = 0; i < m_buffer.size(); i += 8) { // 64-byte lines
+            m_buffer[i] += 1;
+            sum += m_buffer[i];
+        }
+        return sum;
+    }
+
+private:
+    std::vector<std::uint64_t> m_buffer;
+};
 
 enum Method { fcl, distance, within, intersect, method_count };
 const std::array<const char*, method_count> method_names{"fcl", "distance", "within", "do_intersect"};
@@ -240,12 +265,15 @@ void run_model(const std::string& name, const Arguments& args, std::ofstream* cs
     };
 
     std::array<std::vector<Sample>, method_count> samples;
+    Cache_evictor evictor(args.evict_mib);
+    std::uint64_t evictor_sum = 0;
     for (std::size_t k = 0; k < poses.size(); ++k) {
         const auto& pose = poses[k];
         std::array<int, method_count> order{fcl, distance, within, intersect};
         if (k % 2 == 1) std::reverse(order.begin(), order.end());
         std::array<Sample, method_count> now{};
-        for (const int m : order) { // cold: each once
+        for (const int m : order) { // cold: each once, after the caches were evicted
+            if (args.evict_mib > 0) evictor_sum += evictor.sweep();
             const auto [o, us] = run(m, pose);
             now[std::size_t(m)] = {pose.distance, pose.rotation_index, false, us, 0.0, o};
         }
@@ -362,6 +390,7 @@ void run_model(const std::string& name, const Arguments& args, std::ofstream* cs
                 errors.empty() ? std::nan("") : PCCD::testing::sorted_quantile(errors, 90),
                 errors.empty() ? std::nan("") : errors.back(), PCCD::testing::median(signed_errors), pccd_hit_fcl_sep,
                 pccd_sep_fcl_hit, undecided, within_differs, within_vs_distance);
+    if (evictor_sum == 1) std::printf("(evictor)\n"); // keeps the sweeps observable
     std::fflush(stdout);
 }
 
@@ -373,9 +402,10 @@ int main(int argc, char** argv)
         const Arguments args = parse(argc, argv);
         if (std::string(PCCD_DATA_DIR).empty()) throw std::runtime_error("no libcgal-demo data directory configured");
         std::printf("distance_benchmark: %zu points per cloud, %zu rotation pairs x 13 distances (0:3:0.25), seed %llu, "
-                    "margin %.2f mean spacings; cold = one run per pose (methods interleaved), warm = median of %d "
-                    "runs in a row; thread CPU time in us, one thread\n",
-                    args.points, args.rotations, (unsigned long long)args.seed, args.margin_spacings, args.repetitions);
+                    "margin %.2f mean spacings; cold = one run per pose (methods interleaved, each after a %zu MiB cache "
+                    "sweep), warm = median of %d runs in a row; thread CPU time in us, one thread\n",
+                    args.points, args.rotations, (unsigned long long)args.seed, args.margin_spacings, args.evict_mib,
+                    args.repetitions);
         std::ofstream csv;
         if (!args.csv.empty()) {
             csv = PCCD::testing::open_csv(args.csv);
