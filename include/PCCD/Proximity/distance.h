@@ -291,7 +291,7 @@ Clearance_result within_distance(const A& a, const Rigid_transform_3<double>& po
     c.upper_bound = d.upper_bound;
     c.counters = d.counters;
     c.within = d.status == Intersection_status::intersecting ||
-               (d.status == Intersection_status::separate && d.distance <= margin);
+               (d.status == Intersection_status::separate && std::islessequal(d.distance, margin)); // NaN: not known
     if (c.within && d.status == Intersection_status::separate) {
         c.point_a = d.point_a;
         c.point_b = d.point_b;
