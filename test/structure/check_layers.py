@@ -23,6 +23,7 @@ STAGES = [
     ("hierarchy", ["Hierarchy/"]),
     ("object", ["Point_cloud_object*", "make_point_cloud_object.h"]),
     ("intersection", ["Intersection/"]),
+    ("proximity", ["Proximity/"]),
     ("kinetic", ["Kinetic/"]),
     ("exact", ["Exact/"]),
     ("umbrella", ["PCCD.h"]),

@@ -66,6 +66,48 @@ constexpr std::uint64_t pair_seed(std::uint64_t seed, std::uint64_t index)
 
 namespace internal {
 
+/// The checks every batch makes before any work (threads, null objects).
+template <class A, class B>
+void check_batch(std::span<const Posed_pair<A, B>> pairs, const Batch_options& batch, const char* function)
+{
+    if (batch.threads && *batch.threads > Batch_options::max_threads)
+        throw Invalid_input(concat(function, ": threads ", *batch.threads, " exceeds the limit ", Batch_options::max_threads,
+                                   " (leave it unset for all available threads)"));
+    if (batch.threads && *batch.threads == 0)
+        throw Invalid_input(concat(function, ": threads = 0; a thread count must be >= 1 (leave it unset for all available threads)"));
+    for (std::size_t i = 0; i < pairs.size(); ++i)
+        if (pairs[i].a == nullptr || pairs[i].b == nullptr)
+            throw Invalid_input(concat(function, ": pair ", i, " has no object ", pairs[i].a == nullptr ? "a" : "b",
+                                       " (null pointer)"));
+}
+
+/// Runs `answer(pair, seed_index)` for every pair on `batch.threads` threads into a vector of
+/// results in the pairs' order (seed_index = batch.first_index + i). A pair that throws does not
+/// stop the others; afterwards the exception of the first such pair in input order is rethrown,
+/// the one the sequential loop would have thrown.
+template <class Result, class A, class B, class Answer>
+std::vector<Result> run_batch(std::span<const Posed_pair<A, B>> pairs, const Batch_options& batch, const char* function,
+                              Answer answer)
+{
+    check_batch(pairs, batch, function);
+    std::vector<Result> results(pairs.size());
+    std::vector<std::exception_ptr> errors(pairs.size());
+    const auto run = [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            try {
+                results[i] = answer(pairs[i], batch.first_index + i);
+            } catch (...) {
+                errors[i] = std::current_exception();
+            }
+        }
+    };
+    // Grain 1: queries differ in cost by orders of magnitude (a first hit vs a near miss).
+    with_threads(batch.threads, [&] { parallel_for_ranges(pairs.size(), 1, run); });
+    for (const std::exception_ptr& error : errors)
+        if (error) std::rethrow_exception(error);
+    return results;
+}
+
 template <class A, class B, class Policy>
 std::vector<Intersection_result> run_many(std::span<const Posed_pair<A, B>> pairs, const Batch_options& batch,
                                           const Intersection_options& options, const Policy& policy,
@@ -77,38 +119,11 @@ std::vector<Intersection_result> run_many(std::span<const Posed_pair<A, B>> pair
         throw Invalid_input(concat(function, ": options.visitor is set; the batch runs its queries on several threads at "
                                              "once, so a visitor is taken by the single queries only"));
     policy.check();
-    if (batch.threads && *batch.threads > Batch_options::max_threads)
-        throw Invalid_input(concat(function, ": threads ", *batch.threads, " exceeds the limit ", Batch_options::max_threads,
-                                   " (leave it unset for all available threads)"));
-    if (batch.threads && *batch.threads == 0)
-        throw Invalid_input(concat(function, ": threads = 0; a thread count must be >= 1 (leave it unset for all available threads)"));
-    for (std::size_t i = 0; i < pairs.size(); ++i)
-        if (pairs[i].a == nullptr || pairs[i].b == nullptr)
-            throw Invalid_input(concat(function, ": pair ", i, " has no object ", pairs[i].a == nullptr ? "a" : "b",
-                                       " (null pointer)"));
-
-    std::vector<Intersection_result> results(pairs.size());
-    // A pair that throws (e.g. its automatic epsilon is not positive) does not stop the others;
-    // afterwards the exception of the first such pair in input order is rethrown, the one the
-    // sequential loop would have thrown.
-    std::vector<std::exception_ptr> errors(pairs.size());
-    const auto answer = [&](std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i) {
-            try {
-                Intersection_options pair_options = options;
-                pair_options.seed = pair_seed(options.seed, batch.first_index + i);
-                const Posed_pair<A, B>& p = pairs[i];
-                results[i] = run_query(*p.a, p.pose_a, *p.b, p.pose_b, pair_options, policy, first_hit, function);
-            } catch (...) {
-                errors[i] = std::current_exception();
-            }
-        }
-    };
-    // Grain 1: queries differ in cost by orders of magnitude (a first hit vs a near miss).
-    with_threads(batch.threads, [&] { parallel_for_ranges(pairs.size(), 1, answer); });
-    for (const std::exception_ptr& error : errors)
-        if (error) std::rethrow_exception(error);
-    return results;
+    return run_batch<Intersection_result>(pairs, batch, function, [&](const Posed_pair<A, B>& p, std::uint64_t index) {
+        Intersection_options pair_options = options;
+        pair_options.seed = pair_seed(options.seed, index);
+        return run_query(*p.a, p.pose_a, *p.b, p.pose_b, pair_options, policy, first_hit, function);
+    });
 }
 
 } // namespace internal

@@ -35,6 +35,11 @@ struct Distance_options {
     /// Time budget in microseconds (steady clock), as max_f_evaluations; the answer then depends on
     /// the machine's speed. Unset (default): none. When set: finite and > 0.
     std::optional<double> max_time_us = std::nullopt;
+    /// Budget on the node pairs of the closest-pair walk (a deterministic time-critical budget, as
+    /// the ADB-trees of Klein and Zachmann bound the work of a traversal): once spent, the walk
+    /// descends no further and the lower bound is that of the pairs it left, so the interval
+    /// [lower_bound, upper_bound] narrows as the budget grows. Unset (default): none. When set: >= 1.
+    std::optional<std::size_t> max_node_pairs = std::nullopt;
     /// For intersecting poses, also measure the penetration: the deepest point of each surface
     /// inside the other object and its distance to the other surface (Distance_result::depth,
     /// depth_a, depth_b, contact_normal and the witnesses). Default false.
@@ -68,6 +73,8 @@ inline void check_options(const Distance_options& o, const char* function)
         throw Invalid_input(concat(function, ": a budget of zero f evaluations (max_f_evaluations = 0) cannot answer; leave it unset for no budget"));
     if (o.max_time_us && !(std::isfinite(*o.max_time_us) && *o.max_time_us > 0.0))
         throw Invalid_input(concat(function, ": max_time_us ", *o.max_time_us, " must be finite and > 0 (leave it unset for no time limit)"));
+    if (o.max_node_pairs && *o.max_node_pairs == 0)
+        throw Invalid_input(concat(function, ": max_node_pairs = 0 leaves the walk nothing to visit; leave it unset for no budget"));
     if (o.max_contacts == 0) throw Invalid_input(concat(function, ": max_contacts must be >= 1"));
     if (o.candidates == 0) throw Invalid_input(concat(function, ": candidates must be >= 1"));
     check_options(o.intersection, function);
