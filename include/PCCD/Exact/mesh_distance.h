@@ -3,8 +3,8 @@
 // the validation, on the poses of doc/algorithms.md, "Benchmark procedure"): exact_distance, the
 // minimum distance between the two surfaces with the two closest points, and exact_max_depth, the
 // largest local depth of each surface inside the other's volume with its witnesses and the contact
-// normal, over the vertices and a barycentric grid of area samples of the triangles, within a
-// stated sampling error. Both reuse the trees of Exact_mesh and the searches of mesh_separation.h.
+// normal, over the vertices and area samples of the triangles (an adaptive midpoint subdivision),
+// within a stated sampling error. Both reuse the trees of Exact_mesh and the searches of mesh_separation.h.
 //
 // Includes CGAL's Polygon_mesh_processing (through Exact_mesh.h): keep it out of the core headers.
 #pragma once
@@ -88,40 +88,25 @@ struct Deepest_sample {
     Exact_mesh::Point_3 closest;
 };
 
-/// The samples of the triangle (p0, p1, p2): the points p0 + (i/n)(p1 - p0) + (j/n)(p2 - p0),
-/// i, j >= 0, i + j <= n, with n = ceil(longest edge / spacing). They split the triangle into n^2
-/// triangles similar to it with edges at most `spacing`, so every point of the triangle lies within
-/// `spacing` of a sample (a point of a triangle is within its longest edge of each vertex).
-/// The vertices are samples (i, j in {0, n}).
-template <class F>
-void for_each_triangle_sample(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
-                              double spacing, F&& f)
-{
-    const double longest = std::max({(p1 - p0).norm(), (p2 - p1).norm(), (p0 - p2).norm()});
-    const double steps = std::max(1.0, std::ceil(longest / spacing));
-    if (!(steps < 1e7)) throw Invalid_input(concat("exact_max_depth: sample spacing ", spacing,
-                                                   " gives more than 1e7 samples per edge of a triangle of edge ", longest));
-    const auto n = int(steps);
-    const Eigen::Vector3d u = p1 - p0, v = p2 - p0;
-    for (int i = 0; i <= n; ++i)
-        for (int j = 0; i + j <= n; ++j) f(Eigen::Vector3d(p0 + (double(i) / n) * u + (double(j) / n) * v));
-}
-
-/// The largest distance to `target`'s surface of a sample (for_each_triangle_sample at `spacing`)
-/// of a triangle of `source` (vertices mapped to `source_points` in the target's frame) lying
-/// strictly inside the target's volume.
+/// The largest distance to `target`'s surface of a sample of `source`'s surface (vertices mapped
+/// to `source_points` in the target's frame) lying strictly inside the target's volume. The
+/// samples: the vertices of each triangle, then the vertices and centroids of its midpoint
+/// subdivision (each step splits a triangle into four by its edge midpoints) down to pieces whose
+/// edges are at most `spacing`, so every point of the surface lies within `spacing` of a sample of
+/// its piece. The subdivision is a branch and bound that only descends where a point can beat the
+/// best depth found.
 ///
-/// Each triangle is owned by its vertex of smallest index; all the points of the triangles owned
-/// by the vertices of a node of the source's vertex ball tree lie within radius + (longest incident
-/// edge) of the node's centre (a point of a triangle is within max(|v - u|, |v - w|) of its vertex
-/// v, and both are edges incident to v). So the
-/// node's samples are at most (centre distance) + radius + edge from the target's surface (best-
-/// first by that bound, stopping when it cannot beat the best depth), a node whose enlarged ball
-/// misses the target's box is outside the volume, and a node whose enlarged ball does not reach the
-/// target's surface lies on its centre's side (one exact inside test). A triangle is likewise
-/// skipped when its centroid distance plus its centroid radius cannot beat the best, and decided by
-/// one inside test when its centroid ball does not reach the surface; only samples that beat the
-/// best depth in triangles straddling the surface take an inside test each.
+/// Pruning, all of it safe: a point of a triangle is within max(|v - u|, |v - w|) of its vertex v,
+/// and both are edges incident to v. Each triangle is owned by its vertex of smallest index, so all
+/// the points of the triangles owned by the vertices of a node of the source's vertex ball tree lie
+/// within radius + (longest incident edge) of the node's centre: their distance to the target's
+/// surface is at most (centre distance) + radius + edge (best-first by that bound, stopping when
+/// it cannot beat the best depth), a node whose enlarged ball misses the target's box is outside
+/// the volume, and a node whose enlarged ball does not reach the target's surface lies on its
+/// centre's side (one exact inside test for the whole node). A piece of a triangle is likewise
+/// skipped when its centroid distance plus its centroid radius cannot beat the best depth, and
+/// decided by one inside test when its centroid ball does not reach the surface; only samples that
+/// beat the best depth in pieces straddling the surface take an inside test each.
 inline Deepest_sample max_sampled_depth(const Exact_mesh& source, const std::vector<Exact_mesh::Point_3>& source_points,
                                         const Rigid_transform_3<double>& source_to_target, const Exact_mesh& target,
                                         double spacing)
@@ -150,29 +135,43 @@ inline Deepest_sample max_sampled_depth(const Exact_mesh& source, const std::vec
     };
 
     Deepest_sample best;
+    const auto consider = [&](const Eigen::Vector3d& x, const Exact_mesh::Point_3& hint, bool all_inside) {
+        const Exact_mesh::Point_3 p(x.x(), x.y(), x.z());
+        const Exact_mesh::Point_3 closest = target.tree().closest_point(p, hint);
+        const double d = std::sqrt(CGAL::squared_distance(p, closest));
+        if (d > best.depth && (all_inside || target.bounded_side(p) == CGAL::ON_BOUNDED_SIDE)) best = {d, p, closest};
+    };
+    // The piece (p0, p1, p2) of a triangle whose vertices have been considered already.
+    const auto refine = [&](const auto& self, const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
+                            const Exact_mesh::Point_3& hint, bool all_inside) -> void {
+        const Eigen::Vector3d c = (p0 + p1 + p2) / 3.0;
+        const double radius = std::max({(p0 - c).norm(), (p1 - c).norm(), (p2 - c).norm()}) * (1.0 + 1e-12);
+        const Exact_mesh::Point_3 centroid(c.x(), c.y(), c.z());
+        const Exact_mesh::Point_3 closest = target.tree().closest_point(centroid, hint);
+        const double centroid_distance = std::sqrt(CGAL::squared_distance(centroid, closest));
+        if (centroid_distance + radius <= best.depth) return;
+        if (!all_inside && centroid_distance > radius) {
+            if (target.bounded_side(centroid) != CGAL::ON_BOUNDED_SIDE) return;
+            all_inside = true;
+        }
+        if (centroid_distance > best.depth && (all_inside || target.bounded_side(centroid) == CGAL::ON_BOUNDED_SIDE))
+            best = {centroid_distance, centroid, closest};
+        const double longest = std::max({(p1 - p0).norm(), (p2 - p1).norm(), (p0 - p2).norm()});
+        if (longest <= spacing) return;
+        const Eigen::Vector3d m01 = (p0 + p1) / 2.0, m12 = (p1 + p2) / 2.0, m20 = (p2 + p0) / 2.0;
+        for (const Eigen::Vector3d& m : {m01, m12, m20}) consider(m, closest, all_inside);
+        self(self, p0, m01, m20, closest, all_inside);
+        self(self, m01, p1, m12, closest, all_inside);
+        self(self, m20, m12, p2, closest, all_inside);
+        self(self, m01, m12, m20, closest, all_inside);
+    };
     const auto sample_triangle = [&](Exact_mesh::Face_index f, const Item& item) {
         const auto h = mesh.halfedge(f);
         const Eigen::Vector3d p0 = to_vector(source_points[mesh.source(h)]);
         const Eigen::Vector3d p1 = to_vector(source_points[mesh.target(h)]);
         const Eigen::Vector3d p2 = to_vector(source_points[mesh.target(mesh.next(h))]);
-        const Eigen::Vector3d c = (p0 + p1 + p2) / 3.0;
-        const double radius = std::max({(p0 - c).norm(), (p1 - c).norm(), (p2 - c).norm()}) * (1.0 + 1e-12);
-        const Exact_mesh::Point_3 centroid(c.x(), c.y(), c.z());
-        const Exact_mesh::Point_3 centroid_closest = target.tree().closest_point(centroid, item.view.closest);
-        const double centroid_distance = std::sqrt(CGAL::squared_distance(centroid, centroid_closest));
-        if (centroid_distance + radius <= best.depth) return;
-        bool all_inside = item.all_inside;
-        if (!all_inside && centroid_distance > radius) {
-            if (target.bounded_side(centroid) != CGAL::ON_BOUNDED_SIDE) return;
-            all_inside = true;
-        }
-        for_each_triangle_sample(p0, p1, p2, spacing, [&](const Eigen::Vector3d& x) {
-            const Exact_mesh::Point_3 p(x.x(), x.y(), x.z());
-            const Exact_mesh::Point_3 closest = target.tree().closest_point(p, centroid_closest);
-            const double d = std::sqrt(CGAL::squared_distance(p, closest));
-            if (d <= best.depth) return;
-            if (all_inside || target.bounded_side(p) == CGAL::ON_BOUNDED_SIDE) best = {d, p, closest};
-        });
+        for (const Eigen::Vector3d& p : {p0, p1, p2}) consider(p, item.view.closest, item.all_inside);
+        refine(refine, p0, p1, p2, item.view.closest, item.all_inside);
     };
 
     push(0, false, nullptr);
@@ -199,10 +198,14 @@ inline Deepest_sample max_sampled_depth(const Exact_mesh& source, const std::vec
     return best;
 }
 
-inline void check_sample_spacing(double spacing)
+inline void check_sample_spacing(double spacing, const Exact_mesh& a, const Exact_mesh& b)
 {
     if (!(std::isfinite(spacing) && spacing > 0.0))
         throw Invalid_input(concat("exact_max_depth: sample spacing ", spacing, " must be finite and > 0"));
+    const double longest = std::max(a.longest_edge_length(), b.longest_edge_length());
+    if (spacing < 1e-6 * longest)
+        throw Invalid_input(concat("exact_max_depth: sample spacing ", spacing, " is below 1e-6 times the longest edge (",
+                                   longest, "): a triangle would need more than 20 halvings"));
 }
 
 } // namespace internal
@@ -253,36 +256,38 @@ inline Exact_distance exact_distance(const Exact_mesh& a, const Rigid_transform_
 /// dist(x, surface B); deepest_a is such an x and closest_b its closest point on surface B; depth_b
 /// likewise with the roles swapped. See Exact_depth for the normals and their sign.
 ///
-/// How and how exactly: the maximum is taken over the vertices of each mesh and a barycentric grid
-/// of samples of each triangle with edges at most `sample_spacing` (every point of the surface is
-/// within `sample_spacing` of a sample). Inside tests are exact (CGAL::Side_of_triangle_mesh through
-/// Exact_mesh::bounded_side, after the rounding described in Exact_mesh); point-surface distances
-/// are exact closest-point queries on the AABB tree, in double. Error bound: each reported depth
-/// is that of an actual point of the surface, so it is at most the true maximum, and at least the
-/// true maximum minus `sample_spacing`: the distance to a surface is 1-Lipschitz, so the sample s
-/// nearest the true deepest point x (|s - x| <= spacing) has dist(s, B) >= depth - spacing, and
-/// when depth > spacing, s lies inside the ball of radius depth around x, which is inside B's
-/// volume, so s counts. The witnesses are exact for the reported depth (the closest point of the
-/// deepest sample). The search is best-first and prunes only what cannot beat the best depth (see
-/// internal::max_sampled_depth), so its cost grows with the deep region, not with the whole
-/// surface.
+/// How and how exactly: the maximum is taken over the vertices of each mesh and the vertices and
+/// centroids of a midpoint subdivision of each triangle into pieces with edges at most
+/// `sample_spacing` (every point of the surface is within `sample_spacing` of a sample), refined
+/// only where a point can beat the best depth found (internal::max_sampled_depth). Inside tests
+/// are exact (CGAL::Side_of_triangle_mesh through Exact_mesh::bounded_side, after the rounding
+/// described in Exact_mesh); point-surface distances are exact closest-point queries on the AABB
+/// tree, in double. Error bound: each reported depth is that of an actual point of the surface, so
+/// it is at most the true maximum, and at least the true maximum minus `sample_spacing`. Either
+/// the true deepest point x lies in a part skipped because none of its points could beat the depth
+/// already found, which is then >= the true maximum; or a sample s of x's piece has |s - x| <=
+/// spacing, and as the distance to a surface is 1-Lipschitz, dist(s, B) >= depth - spacing; when
+/// depth > spacing, s lies in the ball of radius depth around x, which is inside B's volume, so s
+/// counts. The witnesses are exact for the reported depth (the closest point of the deepest
+/// sample). The cost follows the deep region, not the whole surface.
 ///
 /// Computed for any pose: when the surfaces do not intersect, the depths are 0 unless one surface
 /// is nested inside the other's volume (then depth_a or depth_b is the largest distance from the
 /// inner surface to the outer one, as the definition says).
 ///
 /// \pre both meshes enclose a volume (closed, no self-intersection); else throws Invalid_input.
-/// \throws Invalid_input if `sample_spacing` is not finite and > 0, or so small that a triangle
-///         would take more than 1e7 samples along an edge.
+/// \throws Invalid_input if `sample_spacing` is not finite and > 0, or below 1e-6 times the longest
+///         edge of either mesh (a triangle would need more than 20 halvings).
 /// Complexity: a closest-point query per visited ball-tree node, per triangle of the visited leaves
-/// and per sample of the triangles that can beat the best depth; about (triangle area /
-/// spacing^2) samples per such triangle. Thread-safe.
+/// and per sample of the pieces that can beat the best depth: about log(edge / spacing) levels
+/// around an isolated deepest point, up to (area / spacing^2) samples where the depth is constant
+/// over an area (parallel faces). Thread-safe.
 inline Exact_depth exact_max_depth(const Exact_mesh& a, const Rigid_transform_3<double>& pose_a, const Exact_mesh& b,
                                    const Rigid_transform_3<double>& pose_b, double sample_spacing)
 {
     internal::require_volume(a, "first", "exact_max_depth");
     internal::require_volume(b, "second", "exact_max_depth");
-    internal::check_sample_spacing(sample_spacing);
+    internal::check_sample_spacing(sample_spacing, a, b);
     Exact_depth result;
     result.sample_spacing = sample_spacing;
     result.surfaces_intersect = exact_do_intersect(a, pose_a, b, pose_b);
