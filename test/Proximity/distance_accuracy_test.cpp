@@ -316,9 +316,10 @@ void check_row(const Row& r, bool noisy)
     char buf[256];
     check(n >= 10, name + std::to_string(n) + " separate poses >= 1 s apart (>= 10)");
     const double median_bound = noisy ? 0.25 : 0.1, p99_bound = noisy ? 1.0 : 0.5;
-    std::snprintf(buf, sizeof buf, "distance error median %.3f s <= %.2f s, p99 %.3f s <= %.2f s", median_of(r.distance_errors),
-                  median_bound, p99_of(r.distance_errors), p99_bound);
-    check(n > 0 && median_of(r.distance_errors) <= median_bound && p99_of(r.distance_errors) <= p99_bound, name + buf);
+    std::snprintf(buf, sizeof buf, "distance error median %.3f s <= %.2f s", median_of(r.distance_errors), median_bound);
+    check(n > 0 && median_of(r.distance_errors) <= median_bound, name + buf);
+    std::snprintf(buf, sizeof buf, "distance error p99 %.3f s <= %.2f s", p99_of(r.distance_errors), p99_bound);
+    check(n > 0 && p99_of(r.distance_errors) <= p99_bound, name + buf);
     std::snprintf(buf, sizeof buf, "exact distance in [lower - 0.5 s, upper + 0.5 s] on %zu/%zu >= 99.5 %%", r.covered, n);
     check(n > 0 && double(r.covered) >= 0.995 * double(n), name + buf);
     std::snprintf(buf, sizeof buf, "witnesses on their surfaces (|f| <= 0.05 s) on all %zu poses: %zu off, %zu with |a - b| != distance",
@@ -329,9 +330,10 @@ void check_row(const Row& r, bool noisy)
     check(r.status_poses > 0 && r.status_mismatches == 0, name + buf);
     const std::size_t m = r.depth_errors.size();
     check(m >= 5, name + std::to_string(m) + " intersecting poses deeper than 2 s (>= 5)");
-    std::snprintf(buf, sizeof buf, "depth error median %.3f s <= 0.25 s, contact normal angle median %.1f <= 15 degrees",
-                  median_of(r.depth_errors), median_of(r.normal_angles));
-    check(m > 0 && median_of(r.depth_errors) <= 0.25 && median_of(r.normal_angles) <= 15.0, name + buf);
+    std::snprintf(buf, sizeof buf, "depth error median %.3f s <= 0.25 s", median_of(r.depth_errors));
+    check(m > 0 && median_of(r.depth_errors) <= 0.25, name + buf);
+    std::snprintf(buf, sizeof buf, "contact normal angle median %.1f <= 15 degrees", median_of(r.normal_angles));
+    check(m > 0 && median_of(r.normal_angles) <= 15.0, name + buf);
 }
 
 } // namespace
