@@ -7,6 +7,7 @@
 // CSV file of pose pairs is answered with the same preprocessed objects.
 #include "commands.h"
 #include "intersection_support.h"
+#include "pose_cases.h"
 #include "render_objects.h"
 #include "transform_options.h"
 
@@ -49,49 +50,6 @@ struct Collide_options {
     std::string volume = "box_and_slab";
     std::string png;
 };
-
-/// One pose pair of a --cases file and the line it came from.
-struct Pose_case {
-    std::size_t line;
-    PCCD::Rigid_transform_3<double> pose_a;
-    PCCD::Rigid_transform_3<double> pose_b;
-};
-
-/// The rows of a --cases CSV: 24 numbers each (T_A then T_B, 3x4 row-major); blank lines and lines
-/// starting with '#' are skipped; the first other line may be a header (its first field is not a
-/// number). Every other problem throws, naming the file and the line.
-std::vector<Pose_case> read_cases(const std::string& path)
-{
-    std::ifstream in(path);
-    if (!in)
-        throw PCCD::File_error(path, std::filesystem::exists(path) ? "cannot open the cases file"
-                                                                   : "cannot open the cases file: it does not exist (missing file)");
-    std::vector<Pose_case> cases;
-    bool first_row = true;
-    std::string text;
-    for (std::size_t line = 1; std::getline(in, text); ++line) {
-        const std::vector<std::string> fields = split_fields(text);
-        if (fields.empty() || fields.front().front() == '#') continue;
-        const bool header = first_row && !parse_number(fields.front());
-        first_row = false;
-        if (header) continue;
-        const std::string where = path + ":" + std::to_string(line);
-        if (fields.size() != 24)
-            throw PCCD::Invalid_input(where + ": expected 24 numbers (T_A then T_B, 3x4 row-major each), got " +
-                                      std::to_string(fields.size()) + " fields");
-        PCCD::Rigid_transform_3<double> pose_a = make_transform(fields, 0, where + ": T_A");
-        PCCD::Rigid_transform_3<double> pose_b = make_transform(fields, 12, where + ": T_B");
-        cases.push_back({line, pose_a, pose_b});
-    }
-    if (cases.empty()) throw PCCD::Invalid_input(path + ": no cases (expected rows of 24 numbers)");
-    return cases;
-}
-
-bool same_file(const std::string& a, const std::string& b)
-{
-    std::error_code error;
-    return a == b || std::filesystem::equivalent(a, b, error);
-}
 
 nlohmann::ordered_json object_json(const std::string& file, const Prepared_object& prepared)
 {

@@ -1,8 +1,8 @@
-// tools/intersection_support.h -- what `pccd collide` and `pccd bench` share: reading an object
-// from a file (optionally normalized into [-1, 1]^3, doc/manual/sampling.md) and preprocessing it,
-// choosing the leaf intersector by name (doc/manual/intersection.md, the leaf intersector
-// policies), running one timed query, and the query's counters as JSON and CSV. It implements the
-// command line of doc/manual/cli_collide.md.
+// tools/intersection_support.h -- what `pccd collide`, `pccd distance` and `pccd bench` share:
+// reading an object from a file (optionally normalized into [-1, 1]^3, doc/manual/sampling.md) and
+// preprocessing it, choosing the leaf intersector by name (doc/manual/intersection.md, the leaf
+// intersector policies), running one timed query, and the query's counters as JSON and CSV. It
+// implements the command line of doc/manual/cli_collide.md.
 #pragma once
 
 #include <PCCD/Error.h>
@@ -19,6 +19,7 @@
 
 #include <chrono>
 #include <cstddef>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -72,6 +73,13 @@ inline const std::vector<std::string>& method_names()
 {
     static const std::vector<std::string> names{PCCD::Interpolation_search::name(), PCCD::Randomized_sampling::name()};
     return names;
+}
+
+/// Whether the paths `a` and `b` name the same file (then it is read and preprocessed once).
+inline bool same_file(const std::string& a, const std::string& b)
+{
+    std::error_code error;
+    return a == b || std::filesystem::equivalent(a, b, error);
 }
 
 /// Points (and normals, when given) ready for preprocessing.

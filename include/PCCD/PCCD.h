@@ -25,6 +25,7 @@
 #include <PCCD/concepts/PairObserver.h>
 #include <PCCD/concepts/PathSource.h>
 #include <PCCD/concepts/PointCloudKernel.h>
+#include <PCCD/concepts/ProximityObject.h>
 #include <PCCD/concepts/ProximityGraph.h>
 #include <PCCD/concepts/ReadablePointMap.h>
 #include <PCCD/concepts/SurfaceDistance.h>
@@ -94,6 +95,11 @@
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Intersection/do_intersect_many.h>
 #include <PCCD/Intersection/refinement.h>
+#include <PCCD/Proximity/Distance_options.h>
+#include <PCCD/Proximity/Distance_result.h>
+#include <PCCD/Proximity/contacts.h>
+#include <PCCD/Proximity/distance.h>
+#include <PCCD/Proximity/distance_many.h>
 
 // Kinetic AABB trees
 #include <PCCD/Kinetic/Cubic.h>

@@ -26,6 +26,13 @@ do_intersect_many, intersection_points_many
 Result
     The answer: ``intersects``, ``status``, ``points`` (an (M, 3) array), ``counters``,
     ``query_us``.
+distance, within_distance, contacts
+    How far apart two posed objects are (with witness points, normals and, on request,
+    penetration depths), whether they come closer than a margin, and their contact regions.
+distance_many
+    distance for many pairs in one call, on several threads (seeded by `pair_seed`).
+DistanceResult, ClearanceResult, ContactResult, Contact
+    Their answers, with the attributes named as the fields of PCCD's C++ results.
 orthonormalize
     The nearest rigid pose to a matrix whose rotation part is not quite one, and how far it
     moved (queries refuse R with R^T R - I beyond 1e-5; 6 printed decimals always pass).
@@ -44,13 +51,21 @@ Examples
 >>> pccd.do_intersect(bunny, None, bunny, turn).intersects
 True
 
-The manual: doc/manual/python.md in PCCD's sources.
+The manual: doc/manual/python.md in PCCD's sources (the proximity queries:
+doc/manual/proximity-cli-python.md).
 """
 
 from ._pccd import (
+    ClearanceResult,
+    Contact,
+    ContactResult,
+    DistanceResult,
     Object,
     Result,
     __version__,
+    contacts,
+    distance,
+    distance_many,
     do_intersect,
     do_intersect_many,
     intersection_points,
@@ -58,6 +73,7 @@ from ._pccd import (
     orthonormalize,
     pair_seed,
     read_points,
+    within_distance,
     write_points,
 )
 
@@ -73,4 +89,12 @@ __all__ = [
     "pair_seed",
     "read_points",
     "write_points",
+    "distance",
+    "within_distance",
+    "contacts",
+    "distance_many",
+    "DistanceResult",
+    "ClearanceResult",
+    "ContactResult",
+    "Contact",
 ]

@@ -1,7 +1,8 @@
-// python/src/module.cpp -- the extension module pccd._pccd: adds the parts (I/O, Object, queries)
-// and maps PCCD's exceptions to Python's: PCCD::File_error -> OSError, PCCD::Invalid_input and
-// PCCD::Precondition_failure -> ValueError, PCCD::Assertion_failure -> RuntimeError, each with
-// PCCD's message (doc/manual/python.md, "Errors").
+// python/src/module.cpp -- the extension module pccd._pccd: adds the parts (I/O, Object,
+// intersection queries, proximity queries) and maps PCCD's exceptions to Python's:
+// PCCD::File_error -> OSError, PCCD::Invalid_input and PCCD::Precondition_failure -> ValueError,
+// PCCD::Assertion_failure -> RuntimeError, each with PCCD's message (doc/manual/python.md,
+// "Errors").
 #include "pccd_python.h"
 
 #include <PCCD/Error.h>
@@ -30,4 +31,5 @@ PYBIND11_MODULE(_pccd, m)
     pccd_python::add_io(m);
     pccd_python::add_object(m);
     pccd_python::add_queries(m);
+    pccd_python::add_proximity(m);
 }

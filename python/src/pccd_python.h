@@ -68,5 +68,6 @@ py::array matrix_view(const Eigen::Matrix3Xd& m, py::handle owner);
 void add_io(py::module_& m);
 void add_object(py::module_& m);
 void add_queries(py::module_& m);
+void add_proximity(py::module_& m);
 
 } // namespace pccd_python

@@ -4,6 +4,7 @@
 // arguments, and pccd.Result, the answer with its points and counters. Every query runs with the
 // GIL released (doc/manual/python.md, "Queries").
 #include "pccd_python.h"
+#include "posed_pairs.h"
 
 #include <PCCD/Error.h>
 #include <PCCD/Intersection/Randomized_sampling.h>
@@ -218,32 +219,8 @@ Result query(const Object& a, const py::handle& pose_a, const Object& b, const p
 std::vector<Result> many(const py::iterable& pairs, std::optional<unsigned> threads, std::uint64_t first_index, bool first_hit,
                          const Query_parameters& q)
 {
-    std::vector<PCCD::Posed_pair<Object>> list;
-    std::vector<py::object> objects; // alive while the GIL is released
-    std::size_t i = 0;
-    for (const py::handle item : pairs) {
-        const std::string where = "pairs[" + std::to_string(i) + "]";
-        if (!PySequence_Check(item.ptr()) || py::isinstance<py::str>(item) || py::len(item) != 4)
-            throw py::value_error(where + " must be a tuple (object_a, pose_a, object_b, pose_b)");
-        const py::sequence pair = py::reinterpret_borrow<py::sequence>(item);
-        const py::object a = pair[0];
-        const py::object b = pair[2];
-        if (!py::isinstance<Object>(a) || !py::isinstance<Object>(b))
-            throw py::type_error(where + ": items 0 and 2 must be pccd.Object instances");
-        PCCD::Posed_pair<Object> posed;
-        posed.a = &a.cast<const Object&>();
-        posed.b = &b.cast<const Object&>();
-        try {
-            posed.pose_a = pose_argument(pair[1], "pose_a");
-            posed.pose_b = pose_argument(pair[3], "pose_b");
-        } catch (const std::exception& e) {
-            throw py::value_error(where + ": " + e.what());
-        }
-        list.push_back(posed);
-        objects.push_back(a);
-        objects.push_back(b);
-        ++i;
-    }
+    const Posed_pairs posed = posed_pairs(pairs);
+    const std::vector<PCCD::Posed_pair<Object>>& list = posed.pairs;
     std::vector<PCCD::Intersection_result> results;
     {
         py::gil_scoped_release release;
@@ -494,6 +471,36 @@ query_us : float
 )doc";
 
 } // namespace
+
+Posed_pairs posed_pairs(const py::iterable& pairs)
+{
+    Posed_pairs out;
+    std::size_t i = 0;
+    for (const py::handle item : pairs) {
+        const std::string where = "pairs[" + std::to_string(i) + "]";
+        if (!PySequence_Check(item.ptr()) || py::isinstance<py::str>(item) || py::len(item) != 4)
+            throw py::value_error(where + " must be a tuple (object_a, pose_a, object_b, pose_b)");
+        const py::sequence pair = py::reinterpret_borrow<py::sequence>(item);
+        const py::object a = pair[0];
+        const py::object b = pair[2];
+        if (!py::isinstance<Object>(a) || !py::isinstance<Object>(b))
+            throw py::type_error(where + ": items 0 and 2 must be pccd.Object instances");
+        PCCD::Posed_pair<Object> posed;
+        posed.a = &a.cast<const Object&>();
+        posed.b = &b.cast<const Object&>();
+        try {
+            posed.pose_a = pose_argument(pair[1], "pose_a");
+            posed.pose_b = pose_argument(pair[3], "pose_b");
+        } catch (const std::exception& e) {
+            throw py::value_error(where + ": " + e.what());
+        }
+        out.pairs.push_back(posed);
+        out.keep.push_back(a);
+        out.keep.push_back(b);
+        ++i;
+    }
+    return out;
+}
 
 void add_queries(py::module_& m)
 {

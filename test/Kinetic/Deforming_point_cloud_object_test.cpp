@@ -4,6 +4,7 @@
 // against a rebuild, the stretch rule, and bad input.
 // Also covers Kinetic/Deformation.h: the test cases below exercise what it declares.
 #include <PCCD/Intersection/do_intersect.h>
+#include <PCCD/concepts/ProximityObject.h>
 #include <PCCD/Kinetic/Deformation.h>
 #include <PCCD/Kinetic/Deforming_point_cloud_object.h>
 #include <PCCD/Kinetic/Linear_flightplan.h>
@@ -28,6 +29,8 @@ using Catch::Matchers::Contains;
 using Object = PCCD::Deforming_point_cloud_object<>;
 static_assert(PCCD::CollisionObject<Object>);
 static_assert(PCCD::CollisionObject<PCCD::Deforming_point_cloud_object<PCCD::Eigen_kernel<float>>>);
+static_assert(PCCD::ProximityObject<Object>);
+static_assert(PCCD::ProximityObject<PCCD::Deforming_point_cloud_object<PCCD::Eigen_kernel<float>>>);
 
 namespace {
 

@@ -1,6 +1,6 @@
 # run_cli_test.cmake -- one test of the pccd command line, selected by CASE:
 #   cmake -DPCCD=<pccd binary> -DWORK=<dir with make_cli_data's files> -DDATA_DIR=<libcgal-demo meshes or "">
-#         -DCASE=<name> -P run_cli_test.cmake
+#         -DREFERENCE=<distance_reference binary> -DCASE=<name> -P run_cli_test.cmake
 # Each case runs pccd, prints the command and what it wrote, then checks the exit code (0, or an
 # error exit >= 1 that is not a crash) and regular expressions on stdout + stderr. A case whose data
 # is missing prints PCCD_CLI_TEST_SKIPPED (the test's SKIP_REGULAR_EXPRESSION).
@@ -61,9 +61,39 @@ function(pccd_check_png file width height)
   endif()
 endfunction()
 
+# pccd_reference(<distance_reference arguments>...): the C++ API's answer agrees with what pccd
+# printed (distance_reference.cpp); fails the test, with its report, otherwise.
+function(pccd_reference)
+  execute_process(COMMAND ${REFERENCE} ${ARGN} WORKING_DIRECTORY ${WORK}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  string(REPLACE ";" " " shown "${ARGN}")
+  message("$ distance_reference ${shown}\n[exit ${rc}]\n${out}${err}")
+  if(NOT rc STREQUAL "0")
+    message(FATAL_ERROR "pccd distance and the C++ API disagree (or the JSON does not parse)")
+  endif()
+endfunction()
+
+# pccd_json_number(<out var> <json> <key>): a top-level number of a JSON object.
+function(pccd_json_number out json key)
+  string(JSON value ERROR_VARIABLE error GET "${json}" ${key})
+  if(error)
+    message(FATAL_ERROR "the JSON has no ${key}: ${error}")
+  endif()
+  set(${out} "${value}" PARENT_SCOPE)
+endfunction()
+
+# pccd_expect_between(<value> <low> <high> <what>): low <= value <= high (floating point).
+function(pccd_expect_between value low high what)
+  if(value LESS low OR value GREATER high)
+    message(FATAL_ERROR "${what} is ${value}, expected within [${low}, ${high}]")
+  endif()
+endfunction()
+
 set(identity 1 0 0 0 0 1 0 0 0 0 1 0)
 set(shift_1 1 0 0 1 0 1 0 0 0 0 1 0)
 set(shift_3 1 0 0 3 0 1 0 0 0 0 1 0)
+string(REPLACE ";" "," shift_1_csv "${shift_1}") # one argument, for distance_reference
+string(REPLACE ";" "," shift_3_csv "${shift_3}")
 set(json_counters "\"f_evaluations\": [0-9]+" "\"brackets_tried\": " "\"search_steps\": " "\"samples\": "
                   "\"candidate_points\": " "\"query_us\": [0-9.e+-]+" "\"preprocess_ms\": [0-9.e+-]+")
 
@@ -217,6 +247,157 @@ elseif(CASE STREQUAL "demo_pictures")
   if(GNUPLOT)
     pccd_check_png(demo-times.png 800 480)
   endif()
+elseif(CASE STREQUAL "distance_json")
+  # Two unit spheres 3 apart along x, and the unit sphere and the torus (radii 0.7 and 0.3, outer
+  # radius 1) 3 apart: the gap between the surfaces is 1 in both. The JSON parses, carries every
+  # field of Distance_result, and equals the C++ API's answer bit for bit.
+  set(result_fields "\"status\": \"separate\"" "\"distance\": [0-9.e+-]+," "\"lower_bound\": " "\"upper_bound\": "
+                    "\"point_a\": .\n" "\"point_b\": .\n" "\"normal_a\": .\n" "\"normal_b\": .\n"
+                    "\"depth\": null" "\"depth_a\": null" "\"depth_b\": null" "\"contact_normal\": .\n"
+                    "\"counters\": {" "\"node_pairs\": [0-9]+" "\"f_evaluations\": [0-9]+" "\"query_us\": [0-9.e+-]+")
+  foreach(b sphere.xyz torus.ply)
+    pccd_run(OK ARGS distance sphere.xyz ${b} --transform-b ${shift_3} --seed 5 --json MATCH ${result_fields})
+    file(WRITE ${WORK}/distance_${b}.json "${PCCD_STDOUT}")
+    pccd_json_number(distance "${PCCD_STDOUT}" distance)
+    pccd_json_number(lower "${PCCD_STDOUT}" lower_bound)
+    pccd_json_number(upper "${PCCD_STDOUT}" upper_bound)
+    pccd_expect_between(${distance} 0.97 1.03 "the distance of surfaces 1 apart")
+    pccd_expect_between(${lower} 0 ${distance} "lower_bound")
+    pccd_expect_between(${upper} ${distance} 2 "upper_bound")
+    pccd_reference(json sphere.xyz ${b} ${shift_3_csv} distance_${b}.json --seed 5)
+  endforeach()
+elseif(CASE STREQUAL "distance_text")
+  pccd_run(OK ARGS distance sphere.xyz torus.ply --transform-b ${shift_3}
+           STDOUT_MATCH "A: sphere.xyz, 2000 points" "B: torus.ply, 2000 points" "query distance, seed 24301"
+                        "\nstatus: separate\n" "\ndistance: (0\\.9[789]|1\\.0[0-2])[0-9]*\n" "\nlower_bound: "
+                        "\nupper_bound: " "\npoint_a: .[-0-9.e]+, [-0-9.e]+, [-0-9.e]+.\n" "\npoint_b: ."
+                        "\nnormal_a: ." "\nnormal_b: ." "\ndepth: nan\n" "\ndepth_a: nan\n" "\ndepth_b: nan\n"
+                        "\ncontact_normal: ." "\ncounters: node_pairs [0-9]+ leaf_pairs [0-9]+"
+                        "\nintersection counters: f_evaluations [0-9]+ " "\nquery_us: [0-9.]+\n")
+elseif(CASE STREQUAL "distance_penetration")
+  # Two unit spheres 1 apart intersect: distance 0; with --penetration the depths are measured
+  # (numbers, not null), without it they are not (null).
+  pccd_run(OK ARGS distance sphere.xyz sphere.xyz --transform-b ${shift_1} --json
+           MATCH "\"status\": \"intersecting\"" "\"distance\": 0(\\.0)?," "\"depth\": null" "\"intersection_points\": .\n")
+  pccd_run(OK ARGS distance sphere.xyz sphere.xyz --transform-b ${shift_1} --penetration --json
+           MATCH "\"status\": \"intersecting\"" "\"penetration\": true" "\"depth\": [0-9]" "\"depth_a\": [0-9]"
+                 "\"depth_b\": [0-9]" "\"contact_normal\": .\n")
+  file(WRITE ${WORK}/distance_penetration.json "${PCCD_STDOUT}")
+  pccd_reference(json sphere.xyz sphere.xyz ${shift_1_csv} distance_penetration.json --penetration)
+  # Centres 1.5 apart: A's point (1, 0, 0) lies 0.5 from B's centre, 0.5 deep inside B, and no
+  # point of either sphere lies deeper in the other: depth 0.5; B leaves A along +x.
+  pccd_run(OK ARGS distance sphere.xyz sphere.xyz --transform-b 1 0 0 1.5 0 1 0 0 0 0 1 0 --penetration --json
+           MATCH "\"status\": \"intersecting\"")
+  pccd_json_number(depth "${PCCD_STDOUT}" depth)
+  pccd_expect_between(${depth} 0.475 0.525 "the penetration depth of unit spheres 1.5 apart")
+  string(JSON normal_x GET "${PCCD_STDOUT}" contact_normal 0)
+  pccd_expect_between(${normal_x} 0.95 1.0 "the contact normal's x")
+elseif(CASE STREQUAL "distance_max_distance")
+  # 1 apart: beyond --max-distance 0.5 only "farther than" is reported (distance inf: null in the
+  # JSON, "inf" in the text), with a lower bound above the limit; within 2 the distance is measured.
+  pccd_run(OK ARGS distance sphere.xyz sphere.xyz --transform-b ${shift_3} --max-distance 0.5 --json
+           MATCH "\"status\": \"separate\"" "\"max_distance\": 0.5" "\"distance\": null" "\"point_a\": null")
+  file(WRITE ${WORK}/distance_max.json "${PCCD_STDOUT}")
+  pccd_json_number(lower "${PCCD_STDOUT}" lower_bound)
+  pccd_expect_between(${lower} 0.5 1.1 "lower_bound beyond --max-distance 0.5")
+  pccd_reference(json sphere.xyz sphere.xyz ${shift_3_csv} distance_max.json --max-distance 0.5)
+  pccd_run(OK ARGS distance sphere.xyz sphere.xyz --transform-b ${shift_3} --max-distance 0.5
+           STDOUT_MATCH "\ndistance: inf\n")
+  pccd_run(OK ARGS distance sphere.xyz sphere.xyz --transform-b ${shift_3} --max-distance 2 --json
+           MATCH "\"distance\": (0\\.9[789]|1\\.0[0-2])[0-9]*,")
+  # A budget of node pairs: the interval stays honest about the gap 1 (and narrows as it grows);
+  # --tolerance reaches the refinement. Both as the C++ API answers.
+  foreach(budget 1 8)
+    pccd_run(OK ARGS distance sphere.xyz sphere.xyz --transform-b ${shift_3} --max-node-pairs ${budget} --json
+             MATCH "\"status\": \"separate\"")
+    file(WRITE ${WORK}/distance_budget.json "${PCCD_STDOUT}")
+    pccd_json_number(lower "${PCCD_STDOUT}" lower_bound)
+    pccd_expect_between(${lower} 0 1.03 "lower_bound with --max-node-pairs ${budget}")
+    pccd_reference(json sphere.xyz sphere.xyz ${shift_3_csv} distance_budget.json --max-node-pairs ${budget})
+  endforeach()
+  pccd_run(OK ARGS distance sphere.xyz sphere.xyz --transform-b ${shift_3} --tolerance 0.0005 --json
+           MATCH "\"absolute_tolerance\": 0.0005")
+  file(WRITE ${WORK}/distance_tolerance.json "${PCCD_STDOUT}")
+  pccd_json_number(distance "${PCCD_STDOUT}" distance)
+  pccd_expect_between(${distance} 0.97 1.03 "the distance with --tolerance 0.0005")
+  pccd_reference(json sphere.xyz sphere.xyz ${shift_3_csv} distance_tolerance.json --tolerance 0.0005)
+elseif(CASE STREQUAL "distance_margin")
+  # within_distance: surfaces 1 apart are within 1.5, not within 0.5.
+  pccd_run(OK ARGS distance sphere.xyz sphere.xyz --transform-b ${shift_3} --margin 1.5 --json
+           MATCH "\"query\": \"within_distance\"" "\"within\": true" "\"status\": \"separate\"" "\"margin\": 1.5")
+  file(WRITE ${WORK}/distance_within.json "${PCCD_STDOUT}")
+  pccd_reference(json sphere.xyz sphere.xyz ${shift_3_csv} distance_within.json --margin 1.5)
+  pccd_run(OK ARGS distance sphere.xyz sphere.xyz --transform-b ${shift_3} --margin 0.5 --json
+           MATCH "\"within\": false" "\"margin\": 0.5")
+  file(WRITE ${WORK}/distance_not_within.json "${PCCD_STDOUT}")
+  pccd_reference(json sphere.xyz sphere.xyz ${shift_3_csv} distance_not_within.json --margin 0.5)
+  pccd_run(OK ARGS distance sphere.xyz sphere.xyz --transform-b ${shift_1} --margin 0 STDOUT_MATCH "\nwithin: yes\n")
+elseif(CASE STREQUAL "distance_contacts")
+  pccd_run(OK ARGS distance sphere.xyz sphere.xyz --transform-b ${shift_1} --contacts --json
+           MATCH "\"query\": \"contacts\"" "\"status\": \"intersecting\"" "\"contacts\": .\n +{"
+                 "\"position\": .\n" "\"normal\": .\n" "\"points_inside\": [0-9]+" "\"regions\": [1-9]")
+  pccd_run(OK ARGS distance sphere.xyz sphere.xyz --transform-b ${shift_3} --contacts --json
+           MATCH "\"status\": \"separate\"" "\"contacts\": ..," "\"regions\": 0")
+elseif(CASE STREQUAL "distance_cases")
+  # The --cases file of pccd collide: a header, a blank line, a comment; rows touching, 1 apart,
+  # and B turned 90 degrees about z. One CSV row per pose pair, each the C++ API's answer.
+  file(WRITE ${WORK}/distance_cases.csv
+"a00,a01,a02,a03,a10,a11,a12,a13,a20,a21,a22,a23,b00,b01,b02,b03,b10,b11,b12,b13,b20,b21,b22,b23
+1,0,0,0,0,1,0,0,0,0,1,0,1,0,0,1,0,1,0,0,0,0,1,0
+
+# 1 apart
+1,0,0,0,0,1,0,0,0,0,1,0,1,0,0,3,0,1,0,0,0,0,1,0
+1,0,0,0,0,1,0,0,0,0,1,0,0,-1,0,0.5,1,0,0,0,0,0,1,0
+")
+  set(number "[-0-9.e+infa]+")
+  pccd_run(OK ARGS distance sphere.xyz torus.ply --cases distance_cases.csv
+           STDOUT_MATCH "^case,status,distance,lower_bound,upper_bound,query_us\n1,intersecting,0,0,0,[0-9.]+\n2,separate,(0\\.9[789]|1\\.0[0-2])[0-9]*,${number},${number},[0-9.]+\n3,intersecting,0,0,0,[0-9.]+\n$"
+           MATCH "3 cases")
+  string(REGEX MATCHALL "\n" lines "${PCCD_STDOUT}")
+  list(LENGTH lines n)
+  if(NOT n EQUAL 4)
+    message(FATAL_ERROR "expected a header and 3 rows, got ${n} lines")
+  endif()
+  file(WRITE ${WORK}/distance_cases_out.csv "${PCCD_STDOUT}")
+  # The reference reads plain rows: the same poses without the blank line and the comment.
+  file(WRITE ${WORK}/distance_cases_plain.csv
+"header
+1,0,0,0,0,1,0,0,0,0,1,0,1,0,0,1,0,1,0,0,0,0,1,0
+1,0,0,0,0,1,0,0,0,0,1,0,1,0,0,3,0,1,0,0,0,0,1,0
+1,0,0,0,0,1,0,0,0,0,1,0,0,-1,0,0.5,1,0,0,0,0,0,1,0
+")
+  pccd_reference(cases sphere.xyz torus.ply distance_cases_plain.csv distance_cases_out.csv)
+  # The rows the collide reader refuses are refused here too, naming the file and line.
+  file(WRITE ${WORK}/distance_bad_row.csv "1,0,0,0,0,1,0,0,0,0,1,0,1,0,0,nan,0,1,0,0,0,0,1,0\n")
+  pccd_run(FAIL ARGS distance sphere.xyz sphere.xyz --cases distance_bad_row.csv
+           MATCH "pccd: error: distance_bad_row.csv:1: T_B: rigid transform: translation entry \\(0, 3\\) is nan"
+           NO_MATCH "case,status")
+elseif(CASE STREQUAL "distance_png")
+  file(REMOVE "${WORK}/distance.png")
+  pccd_run(OK ARGS distance sphere.xyz torus.ply --transform-b ${shift_3} --png distance.png
+           MATCH "status: separate" "wrote [^\n]*distance.png: A blue, B gold, the witness segment red")
+  pccd_check_png(distance.png 800 600)
+elseif(CASE STREQUAL "distance_bad_arguments")
+  # Each refused before any preprocessing, with "pccd: error: " and the option's name; never a crash.
+  pccd_run(FAIL ARGS distance sphere.xyz sphere.xyz --margin -1 MATCH "pccd: error: --margin -1: must be >= 0")
+  pccd_run(FAIL ARGS distance sphere.xyz sphere.xyz --margin nan MATCH "pccd: error: --margin: \"nan\" is not a finite number")
+  pccd_run(FAIL ARGS distance sphere.xyz sphere.xyz --tolerance -0.1 MATCH "pccd: error: --tolerance -0.1: must be > 0")
+  pccd_run(FAIL ARGS distance sphere.xyz sphere.xyz --tolerance 0 MATCH "pccd: error: --tolerance 0: must be > 0")
+  pccd_run(FAIL ARGS distance sphere.xyz sphere.xyz --relative-tolerance -1 MATCH "pccd: error: --relative-tolerance -1: must be >= 0")
+  pccd_run(FAIL ARGS distance sphere.xyz sphere.xyz --max-distance -1 MATCH "pccd: error: --max-distance -1: must be >= 0")
+  pccd_run(FAIL ARGS distance sphere.xyz sphere.xyz --max-distance inf MATCH "pccd: error: --max-distance: \"inf\" is not a finite number")
+  pccd_run(FAIL ARGS distance sphere.xyz sphere.xyz --budget-us -5 MATCH "pccd: error: --budget-us -5: must be >= 0")
+  pccd_run(FAIL ARGS distance sphere.xyz sphere.xyz --contacts --max-contacts 0 MATCH "pccd: error: --max-contacts 0: must be >= 1")
+  pccd_run(FAIL ARGS distance sphere.xyz sphere.xyz --transform-b 1 0 0 nan 0 1 0 0 0 0 1 0
+           MATCH "pccd: error: --transform-b: rigid transform: translation entry \\(0, 3\\) is nan")
+  pccd_run(FAIL ARGS distance sphere.xyz sphere.xyz --transform-a 2 0 0 0 0 1 0 0 0 0 1 0
+           MATCH "pccd: error: --transform-a: rigid transform: the rotation part scales")
+  pccd_run(FAIL ARGS distance sphere.xyz sphere.xyz --transform-b 1 0 0 0 0 1 0 0 0 0 -1 0
+           MATCH "pccd: error: --transform-b: rigid transform: the rotation part is a reflection")
+  pccd_run(FAIL ARGS distance sphere.xyz sphere.xyz --transform-b 1 0 0 MATCH "--transform-b expects 12 numbers")
+  pccd_run(FAIL ARGS distance sphere.xyz sphere.xyz --margin 1 --contacts MATCH "excludes")
+  pccd_run(FAIL ARGS distance sphere.xyz sphere.xyz --cases distance_cases.csv --json MATCH "excludes")
+  pccd_run(FAIL ARGS distance no_such_cloud.xyz sphere.xyz MATCH "no_such_cloud.xyz: .*missing file")
 elseif(CASE STREQUAL "progress_not_a_terminal")
   # stderr is a pipe here: the preprocessing progress stays off, stderr stays empty.
   pccd_run(OK ARGS info sphere.xyz STDERR_EMPTY)

@@ -4,7 +4,7 @@
 // requirement, that the concept rejects. The archetypes wrap real models, so the algorithms also run
 // on them and must give the same answers as on the models.
 //
-// Concepts covered: CollisionObject and LeafIntersector (do_intersect, intersection_points, both
+// Concepts covered: CollisionObject, ProximityObject (distance, within_distance, contacts) and LeafIntersector (do_intersect, intersection_points, both
 // policies, both path choices, the batch queries), PathSource (the interpolation search's role),
 // SurfaceDistance and SurfaceWeight (WLS_surface, estimate_normals), PointCloudKernel (Point_cloud,
 // both distances, the graphs, the sampling radius, outliers, the domain, Point_cloud_object) and
@@ -22,6 +22,8 @@
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Intersection/do_intersect_many.h>
 #include <PCCD/Point_cloud_object.h>
+#include <PCCD/Proximity/contacts.h>
+#include <PCCD/Proximity/distance.h>
 #include <PCCD/Proximity_graph/graph_components.h>
 #include <PCCD/Proximity_graph/knn_graph.h>
 #include <PCCD/Proximity_graph/prune_long_edges.h>
@@ -36,6 +38,7 @@
 #include <PCCD/concepts/LeafIntersector.h>
 #include <PCCD/concepts/PairObserver.h>
 #include <PCCD/concepts/PathSource.h>
+#include <PCCD/concepts/ProximityObject.h>
 #include <PCCD/concepts/ProximityGraph.h>
 #include <PCCD/concepts/SurfaceDistance.h>
 #include <PCCD/concepts/SurfaceWeight.h>
@@ -244,6 +247,16 @@ private:
     const Object* m_object;
     Cloud m_cloud;
     Surface m_surface;
+};
+
+/// Exactly the members ProximityObject requires: a collision object and its normals.
+class Proximity_object : public Collision_object {
+public:
+    explicit Proximity_object(const Object& o) : Collision_object(o), m_normals(&o.normals()) {}
+    const Eigen::Matrix3Xd& normals() const { return *m_normals; }
+
+private:
+    const Eigen::Matrix3Xd* m_normals;
 };
 
 // Near-misses: each lacks one requirement of CollisionObject.
@@ -524,6 +537,8 @@ static_assert(!PCCD::CollisionObject<archetype::With_foreign_paths>);
 static_assert(!PCCD::CollisionObject<archetype::With_value_surface>);
 static_assert(!PCCD::CollisionObject<archetype::With_temporary_coordinates>);
 static_assert(!PCCD::CollisionObject<archetype::Without_hierarchy>);
+static_assert(PCCD::ProximityObject<archetype::Proximity_object>);
+static_assert(!PCCD::ProximityObject<archetype::Collision_object>); // no normals
 
 using Arch = archetype::Collision_object;
 static_assert(PCCD::LeafIntersector<archetype::Leaf_intersector, Arch, Arch>);
@@ -571,6 +586,25 @@ TEST_CASE("the intersection queries run on collision-object archetypes as on the
         CHECK(PCCD::do_intersect(arch, identity, arch, pose, {}, archetype::Leaf_intersector{}).intersects == expected);
         const auto curve = PCCD::intersection_points(arch, identity, arch, pose);
         CHECK(curve.points.size() == PCCD::intersection_points(object, identity, object, pose).points.size());
+    }
+}
+
+TEST_CASE("the proximity queries run on proximity-object archetypes as on the model", "[concepts]")
+{
+    const auto sample = sample_shape(unit_sphere(), 3000, 0.0, 92);
+    const archetype::Object object(columns(sample.points));
+    const archetype::Proximity_object arch(object);
+    const PCCD::Rigid_transform_3<double> identity;
+    for (const double shift : {1.8, 2.3}) {
+        const PCCD::Rigid_transform_3<double> pose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(shift, 0.0, 0.0));
+        const PCCD::Distance_options options{.penetration = true};
+        const PCCD::Distance_result model = PCCD::distance(object, identity, object, pose, options);
+        const PCCD::Distance_result with_archetype = PCCD::distance(arch, identity, arch, pose, options);
+        CHECK(with_archetype.status == model.status);
+        CHECK(with_archetype.counters == model.counters);
+        CHECK((std::isnan(model.distance) ? std::isnan(with_archetype.distance) : with_archetype.distance == model.distance));
+        CHECK(PCCD::within_distance(arch, identity, arch, pose, 0.5).within);
+        CHECK(PCCD::contacts(arch, identity, arch, pose).contacts.size() == PCCD::contacts(object, identity, object, pose).contacts.size());
     }
 }
 

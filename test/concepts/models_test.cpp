@@ -11,6 +11,7 @@
 #include <PCCD/concepts/PairObserver.h>
 #include <PCCD/concepts/PointCloudKernel.h>
 #include <PCCD/concepts/ProximityGraph.h>
+#include <PCCD/concepts/ProximityObject.h>
 #include <PCCD/concepts/ReadablePointMap.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -48,6 +49,11 @@ static_assert(PCCD::CollisionObject<PCCD::Point_cloud_object<PCCD::Eigen_kernel<
 static_assert(PCCD::CollisionObject<PCCD::Point_cloud_object<Epick>>);
 static_assert(PCCD::CollisionObject<PCCD::Point_cloud_object<Sc_double>>);
 static_assert(!PCCD::CollisionObject<PCCD::Point_cloud<>>);
+static_assert(PCCD::ProximityObject<PCCD::Point_cloud_object<PCCD::Eigen_kernel<double>>>);
+static_assert(PCCD::ProximityObject<PCCD::Point_cloud_object<PCCD::Eigen_kernel<float>>>);
+static_assert(PCCD::ProximityObject<PCCD::Point_cloud_object<Epick>>);
+static_assert(PCCD::ProximityObject<PCCD::Point_cloud_object<Sc_double>>);
+static_assert(!PCCD::ProximityObject<PCCD::Point_cloud<>>);
 static_assert(PCCD::LeafIntersector<PCCD::Interpolation_search, PCCD::Point_cloud_object<>, PCCD::Point_cloud_object<>>);
 static_assert(PCCD::LeafIntersector<PCCD::Randomized_sampling, PCCD::Point_cloud_object<>, PCCD::Point_cloud_object<Epick>>);
 static_assert(!PCCD::LeafIntersector<PCCD::Intersection_options, PCCD::Point_cloud_object<>, PCCD::Point_cloud_object<>>);

@@ -1,6 +1,7 @@
 """examples/python/dask_many_pairs.py on a LocalCluster of 2 worker processes: its results,
 gathered from the workers, equal one pccd.do_intersect_many (intersection_points_many) call over
-the same pairs, bit for bit."""
+the same pairs, bit for bit; examples/python/proximity.py prints the exact gaps and depths of its
+two spheres."""
 
 import os
 import subprocess
@@ -54,3 +55,29 @@ def test_readme_quotes_the_quickstart(source_dir):
     """The README's Python example is examples/python/quickstart.py, verbatim."""
     quickstart = (source_dir / "examples" / "python" / "quickstart.py").read_text().rstrip("\n")
     assert "```python\n" + quickstart + "\n```" in (source_dir / "README.md").read_text()
+
+
+def test_proximity_example_prints_the_exact_gaps_and_depths(source_dir):
+    """examples/python/proximity.py: its distances are the spheres' exact gaps (within 3 %, or 0.002
+    for the smallest), its depths the exact ones within 10 %, and its batch equals the single calls."""
+    script = source_dir / "examples" / "python" / "proximity.py"
+    done = subprocess.run([sys.executable, str(script), "--threads", "2"], capture_output=True, text=True,
+                          timeout=600)
+    assert done.returncode == 0, done.stdout + done.stderr
+    rows = [line.split() for line in done.stdout.splitlines() if line[:5].strip().replace(".", "").isdigit()]
+    assert len(rows) == 6, done.stdout
+    separate = intersecting = 0
+    for row in rows:
+        x, gap, distance = float(row[0]), float(row[1]), float(row[2])
+        if gap > 0:
+            separate += 1
+            assert abs(distance - gap) <= max(0.03 * gap, 0.002), row
+        else:
+            intersecting += 1
+            assert distance == 0, row
+            depth, exact = float(row[-2]), float(row[-1])
+            assert abs(depth - exact) <= 0.1 * exact, row
+        assert row[5] == str(gap < 0.1), row  # within the default margin 0.1
+    assert separate == 4 and intersecting == 2
+    assert "2 threads, the same answers as the single calls" in done.stdout
+    assert "contacts at x = 0.75: intersecting" in done.stdout

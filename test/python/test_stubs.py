@@ -1,6 +1,7 @@
 """The type stubs python/pccd/_pccd.pyi (installed next to the module, with py.typed): they parse,
-name every public attribute of the module, of Object and of Result, and nothing that does not
-exist; the functions' parameters match the module's signatures where pybind11 states them."""
+name every public attribute of the module and of its classes (Object, Result and the proximity
+queries' results), and nothing that does not exist; the functions' parameters match the module's
+signatures where pybind11 states them."""
 
 import ast
 import pathlib
@@ -42,7 +43,8 @@ def test_the_stubs_name_every_public_attribute_and_nothing_else():
     assert module - stubbed == set(), f"not in the stubs: {sorted(module - stubbed)}"
     assert stubbed - module == set(), f"in the stubs only: {sorted(stubbed - module)}"
     assert set(pccd.__all__) <= stubbed
-    for cls in (compiled.Object, compiled.Result):
+    for cls in (compiled.Object, compiled.Result, compiled.DistanceResult, compiled.ClearanceResult,
+                compiled.ContactResult, compiled.Contact):
         members = public(dir(cls))
         stubbed_members = {m for m in class_members(names[cls.__name__]) if not m.startswith("_")}
         assert members - stubbed_members == set(), f"{cls.__name__}: not in the stubs: {sorted(members - stubbed_members)}"
@@ -51,7 +53,8 @@ def test_the_stubs_name_every_public_attribute_and_nothing_else():
 
 def test_the_stubbed_parameters_are_the_modules():
     names = stub_names(stub_tree())
-    for name in ("read_points", "write_points", "orthonormalize", "pair_seed", "do_intersect", "intersection_points"):
+    for name in ("read_points", "write_points", "orthonormalize", "pair_seed", "do_intersect", "intersection_points",
+                 "distance", "within_distance", "contacts"):
         node = names[name]
         stubbed = [a.arg for a in node.args.args] + [a.arg for a in node.args.kwonlyargs]
         signature = getattr(compiled, name).__doc__.splitlines()[0]  # pybind11: "name(a: ..., b: ...) -> ..."

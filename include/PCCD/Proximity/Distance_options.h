@@ -24,7 +24,7 @@ struct Distance_options {
     /// See absolute_tolerance. Default 0. Must be finite and >= 0.
     double relative_tolerance = 0.0;
     /// Farther than this (world units), report only that: status separate, distance +infinity,
-    /// lower_bound > max_distance, no witnesses. Cheap: the hierarchy walk prunes every node pair
+    /// lower_bound >= max_distance, no witnesses. Cheap: the hierarchy walk prunes every node pair
     /// beyond it. Unset (default): no limit. When set: finite and >= 0.
     std::optional<double> max_distance = std::nullopt;
     /// Budget on the evaluations of f (both surfaces, the intersection query included). Unset

@@ -40,9 +40,10 @@ struct Distance_counters {
     friend bool operator==(const Distance_counters&, const Distance_counters&) = default;
 };
 
-/// Calls `f(name, value)` for each counter of `counters` (the intersection query's own through
-/// for_each_counter of Intersection_counters, names prefixed "intersection_"), in a fixed order,
-/// with the names the tools and the Python module use.
+/// Calls `f(name, value)` for each counter of `counters` but the intersection query's, in a fixed
+/// order, with the names the tools and the Python module use. The intersection query's counters
+/// are listed by for_each_counter(counters.intersection, f); the tools and the Python module print
+/// them with their names prefixed "intersection_".
 template <class Counters, class F>
     requires std::same_as<std::remove_cvref_t<Counters>, Distance_counters>
 void for_each_counter(Counters&& counters, F&& f)

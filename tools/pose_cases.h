@@ -1,0 +1,56 @@
+// tools/pose_cases.h -- the --cases files of `pccd collide` and `pccd distance`: CSV rows of 24
+// numbers, the pose of A and then the pose of B, each a 3x4 [R | t] matrix row by row
+// (doc/manual/cli_collide.md, "--cases FILE").
+#pragma once
+
+#include "transform_options.h"
+
+#include <PCCD/Error.h>
+#include <PCCD/Rigid_transform_3.h>
+
+#include <cstddef>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace pccd_tool {
+
+/// One pose pair of a --cases file and the line it came from.
+struct Pose_case {
+    std::size_t line;
+    PCCD::Rigid_transform_3<double> pose_a;
+    PCCD::Rigid_transform_3<double> pose_b;
+};
+
+/// The rows of a --cases CSV: 24 numbers each (T_A then T_B, 3x4 row-major); blank lines and lines
+/// starting with '#' are skipped; the first other line may be a header (its first field is not a
+/// number). Every other problem throws, naming the file and the line.
+inline std::vector<Pose_case> read_cases(const std::string& path)
+{
+    std::ifstream in(path);
+    if (!in)
+        throw PCCD::File_error(path, std::filesystem::exists(path) ? "cannot open the cases file"
+                                                                   : "cannot open the cases file: it does not exist (missing file)");
+    std::vector<Pose_case> cases;
+    bool first_row = true;
+    std::string text;
+    for (std::size_t line = 1; std::getline(in, text); ++line) {
+        const std::vector<std::string> fields = split_fields(text);
+        if (fields.empty() || fields.front().front() == '#') continue;
+        const bool header = first_row && !parse_number(fields.front());
+        first_row = false;
+        if (header) continue;
+        const std::string where = path + ":" + std::to_string(line);
+        if (fields.size() != 24)
+            throw PCCD::Invalid_input(where + ": expected 24 numbers (T_A then T_B, 3x4 row-major each), got " +
+                                      std::to_string(fields.size()) + " fields");
+        PCCD::Rigid_transform_3<double> pose_a = make_transform(fields, 0, where + ": T_A");
+        PCCD::Rigid_transform_3<double> pose_b = make_transform(fields, 12, where + ": T_B");
+        cases.push_back({line, pose_a, pose_b});
+    }
+    if (cases.empty()) throw PCCD::Invalid_input(path + ": no cases (expected rows of 24 numbers)");
+    return cases;
+}
+
+} // namespace pccd_tool
