@@ -32,6 +32,7 @@
 #include <PCCD/testing/pose_generator.h>
 #include "build_helpers.h"
 #include "data_helpers.h"
+#include "exact_test_helpers.h"
 
 namespace {
 
@@ -43,45 +44,7 @@ using Pose = Rigid_transform_3<double>;
 
 // --- Meshes ---------------------------------------------------------------------------------------
 
-/// A subdivided icosahedron with its vertices on the unit sphere, outward oriented, then scaled by
-/// `axes` (an ellipsoid when they differ) and moved to `centre`.
-Triangle_mesh_data icosphere(int subdivisions, const Vector3& centre = Vector3::Zero(), double radius = 1.0,
-                             const Vector3& axes = Vector3::Ones())
-{
-    const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-    std::vector<Vector3> v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                              {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-    for (Vector3& p : v) p.normalize();
-    std::vector<std::array<std::uint32_t, 3>> f = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                                                   {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                                                   {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                                                   {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-    for (int s = 0; s < subdivisions; ++s) {
-        std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> midpoint;
-        const auto middle = [&](std::uint32_t a, std::uint32_t b) {
-            const auto key = std::minmax(a, b);
-            const auto it = midpoint.find(key);
-            if (it != midpoint.end()) return it->second;
-            v.push_back((v[a] + v[b]).normalized());
-            const auto index = std::uint32_t(v.size() - 1);
-            midpoint.emplace(key, index);
-            return index;
-        };
-        std::vector<std::array<std::uint32_t, 3>> next;
-        for (const auto& tri : f) {
-            const std::uint32_t ab = middle(tri[0], tri[1]), bc = middle(tri[1], tri[2]), ca = middle(tri[2], tri[0]);
-            next.push_back({tri[0], ab, ca});
-            next.push_back({tri[1], bc, ab});
-            next.push_back({tri[2], ca, bc});
-            next.push_back({ab, bc, ca});
-        }
-        f = std::move(next);
-    }
-    Triangle_mesh_data mesh;
-    for (const Vector3& p : v) mesh.vertices.push_back(centre + radius * p.cwiseProduct(axes));
-    mesh.triangles = f;
-    return mesh;
-}
+using pccd_test::icosphere;
 
 /// A mesh of the libcgal-demo data set, or nothing when the data is not installed.
 bool read_data_mesh(const std::string& name, Triangle_mesh_data& mesh)

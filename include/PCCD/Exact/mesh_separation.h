@@ -12,7 +12,10 @@
 #include <cstddef>
 #include <limits>
 #include <queue>
+#include <utility>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include <PCCD/Error.h>
 #include <PCCD/Exact/Exact_mesh.h>
@@ -95,15 +98,25 @@ inline double vertex_distance(const Exact_mesh::Point_3& p, const Exact_mesh& ta
     return std::sqrt(CGAL::squared_distance(p, target.tree().closest_point(p, leaf.closest)));
 }
 
+/// The closest pair found so far between a source and a target surface: `distance` and the two
+/// points realizing it, `on_source` and `on_target`, in the target's frame (meaningless while
+/// `distance` is +infinity).
+struct Closest_pair {
+    double distance = std::numeric_limits<double>::infinity();
+    Exact_mesh::Point_3 on_source;
+    Exact_mesh::Point_3 on_target;
+};
+
 /// The distances to `target`'s surface of the vertices of `source` (mapped to `source_points` in
-/// the target's frame) that can end an edge closer to the target than `best`, the smallest vertex
-/// distance (updated here); +infinity for the others. Best-first search of the source's ball tree:
-/// a node whose vertices are all farther than best + (their longest incident edge) is pruned, so
-/// an uncomputed vertex v has distance >= best + (every edge at v).
+/// the target's frame) that can end an edge closer to the target than `best.distance`, the smallest
+/// vertex distance (updated here, with the vertex and its closest point on the target when a vertex
+/// beats it); +infinity for the others. Best-first search of the source's ball tree: a node whose
+/// vertices are all farther than best + (their longest incident edge) is pruned, so an uncomputed
+/// vertex v has distance >= best + (every edge at v).
 inline std::vector<double> near_vertex_distances(const Exact_mesh& source,
                                                  const std::vector<Exact_mesh::Point_3>& source_points,
                                                  const Rigid_transform_3<double>& source_to_target,
-                                                 const Exact_mesh& target, double& best)
+                                                 const Exact_mesh& target, Closest_pair& best)
 {
     const auto& balls = source.vertex_ball_tree();
     std::vector<double> distance(source_points.size(), std::numeric_limits<double>::infinity());
@@ -116,13 +129,15 @@ inline std::vector<double> near_vertex_distances(const Exact_mesh& source,
     while (!queue.empty()) {
         const Ball_view view = queue.top();
         queue.pop();
-        if (key(view) >= best) break;
+        if (key(view) >= best.distance) break;
         const Exact_mesh::Vertex_ball& ball = balls[view.node];
         if (ball.is_leaf()) {
             for (std::size_t i = ball.begin; i < ball.end; ++i) {
                 const Exact_mesh::Vertex_index v = source.ball_tree_vertices()[i];
-                distance[v] = vertex_distance(source_points[v], target, view);
-                best = std::min(best, distance[v]);
+                const Exact_mesh::Point_3& p = source_points[v];
+                const Exact_mesh::Point_3 closest = target.tree().closest_point(p, view.closest);
+                distance[v] = std::sqrt(CGAL::squared_distance(p, closest));
+                if (distance[v] < best.distance) best = {distance[v], p, closest};
             }
         } else {
             for (const std::size_t child : ball.children)
@@ -150,11 +165,54 @@ inline std::vector<Exact_mesh::Segment_3> near_edges(const Exact_mesh& mesh, con
     return segments;
 }
 
-/// The minimum distance between the surfaces of two posed meshes known not to intersect: for
-/// disjoint triangle meshes it is reached at a vertex-triangle or an edge-edge pair. The vertex
-/// distances come from near_vertex_distances (both ways); the edges that can beat the smallest of
-/// them (near_edges) are then paired each with each, with a box-distance rejection.
-inline double surface_distance(const Exact_pair_view& view)
+/// The closest points of the segments [p0, p1] and [q0, q1] (the first on [p0, p1]), in double.
+/// The minimum of the squared distance over the two parameters is reached either at an interior
+/// critical point of both (the solution of the 2x2 normal equations, when the segments are not
+/// parallel and it lies inside both parameter ranges) or with one parameter at an end of its range,
+/// where it is the closest point of the other segment to that endpoint. Every candidate is a pair
+/// of points of the two segments, so the smallest of these (at most five) is the answer, also for
+/// parallel or degenerate segments, whatever the rounding of the interior solution.
+inline std::pair<Eigen::Vector3d, Eigen::Vector3d> closest_points_of_segments(const Eigen::Vector3d& p0,
+                                                                              const Eigen::Vector3d& p1,
+                                                                              const Eigen::Vector3d& q0,
+                                                                              const Eigen::Vector3d& q1)
+{
+    const auto on_segment = [](const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+        const Eigen::Vector3d ab = b - a;
+        const double length2 = ab.squaredNorm();
+        const double t = length2 > 0.0 ? std::clamp((x - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+        return Eigen::Vector3d(a + t * ab);
+    };
+    std::pair<Eigen::Vector3d, Eigen::Vector3d> best{p0, on_segment(p0, q0, q1)};
+    double best_squared = (best.first - best.second).squaredNorm();
+    const auto consider = [&](const Eigen::Vector3d& x, const Eigen::Vector3d& y) {
+        const double squared = (x - y).squaredNorm();
+        if (squared < best_squared) {
+            best_squared = squared;
+            best = {x, y};
+        }
+    };
+    consider(p1, on_segment(p1, q0, q1));
+    consider(on_segment(q0, p0, p1), q0);
+    consider(on_segment(q1, p0, p1), q1);
+    const Eigen::Vector3d u = p1 - p0, v = q1 - q0, w = p0 - q0;
+    const double a = u.dot(u), b = u.dot(v), c = v.dot(v), d = u.dot(w), e = v.dot(w);
+    const double denominator = a * c - b * b; // |u x v|^2 >= 0, 0 for parallel segments
+    if (denominator > 0.0) {
+        const double s = (b * e - c * d) / denominator, t = (a * e - b * d) / denominator;
+        if (s > 0.0 && s < 1.0 && t > 0.0 && t < 1.0) consider(p0 + s * u, q0 + t * v);
+    }
+    return best;
+}
+
+/// The minimum distance between the surfaces of two posed meshes known not to intersect, with the
+/// two points realizing it (`on_source` on the moved mesh, `on_target` on the fixed one, both in
+/// the fixed frame): for disjoint triangle meshes it is reached at a vertex-triangle or an
+/// edge-edge pair. The vertex distances come from near_vertex_distances (both ways); the edges
+/// that can beat the smallest of them (near_edges) are then paired each with each, with a
+/// box-distance rejection. The distance of an edge pair is CGAL's; its points, computed only for
+/// the pairs that improve the minimum, are closest_points_of_segments'.
+inline Closest_pair surface_gap(const Exact_pair_view& view)
 {
     const Rigid_transform_3<double> fixed_to_moved = view.moved_to_fixed.inverse();
     const std::vector<Exact_mesh::Point_3> fixed_points = view.fixed.transformed_points(fixed_to_moved);
@@ -162,16 +220,27 @@ inline double surface_distance(const Exact_pair_view& view)
     fixed_local.reserve(view.fixed.number_of_vertices());
     for (const auto v : vertices(view.fixed.mesh())) fixed_local.push_back(view.fixed.mesh().point(v));
 
-    double best = std::numeric_limits<double>::infinity();
+    Closest_pair moved_pair; // moved vertex -> fixed surface, fixed frame
     const std::vector<double> moved_distance =
-        near_vertex_distances(view.moved, view.moved_points, view.moved_to_fixed, view.fixed, best);
+        near_vertex_distances(view.moved, view.moved_points, view.moved_to_fixed, view.fixed, moved_pair);
+    Closest_pair fixed_pair{moved_pair.distance, {}, {}}; // fixed vertex -> moved surface, moved frame
     const std::vector<double> fixed_distance =
-        near_vertex_distances(view.fixed, fixed_points, fixed_to_moved, view.moved, best);
+        near_vertex_distances(view.fixed, fixed_points, fixed_to_moved, view.moved, fixed_pair);
+    Closest_pair best = moved_pair;
+    if (fixed_pair.distance < moved_pair.distance) {
+        const auto to_fixed = [&](const Exact_mesh::Point_3& p) {
+            const Eigen::Vector3d q = view.moved_to_fixed.transform_point(Eigen::Vector3d(p.x(), p.y(), p.z()));
+            return Exact_mesh::Point_3(q.x(), q.y(), q.z());
+        };
+        best = {fixed_pair.distance, to_fixed(fixed_pair.on_target), to_fixed(fixed_pair.on_source)};
+    }
 
     // Both edge sets in the fixed frame.
-    const std::vector<Exact_mesh::Segment_3> moved_edges = near_edges(view.moved, view.moved_points, moved_distance, best);
-    const std::vector<Exact_mesh::Segment_3> fixed_edges = near_edges(view.fixed, fixed_local, fixed_distance, best);
-    double best_squared = best * best;
+    const std::vector<Exact_mesh::Segment_3> moved_edges =
+        near_edges(view.moved, view.moved_points, moved_distance, best.distance);
+    const std::vector<Exact_mesh::Segment_3> fixed_edges = near_edges(view.fixed, fixed_local, fixed_distance, best.distance);
+    double best_squared = best.distance * best.distance;
+    const auto vector = [](const Exact_mesh::Point_3& p) { return Eigen::Vector3d(p.x(), p.y(), p.z()); };
     for (const Exact_mesh::Segment_3& s : moved_edges) {
         const CGAL::Bbox_3 s_box = s.bbox();
         for (const Exact_mesh::Segment_3& t : fixed_edges) {
@@ -182,10 +251,17 @@ inline double surface_distance(const Exact_pair_view& view)
                 box_gap += gap * gap;
             }
             if (box_gap >= best_squared) continue;
-            best_squared = std::min(best_squared, CGAL::squared_distance(s, t));
+            const double squared = CGAL::squared_distance(s, t);
+            if (squared >= best_squared) continue;
+            best_squared = squared;
+            const auto [x, y] = closest_points_of_segments(vector(s.source()), vector(s.target()), vector(t.source()),
+                                                           vector(t.target()));
+            best.on_source = {x.x(), x.y(), x.z()};
+            best.on_target = {y.x(), y.y(), y.z()};
         }
     }
-    return std::sqrt(best_squared);
+    best.distance = std::sqrt(best_squared);
+    return best;
 }
 
 /// The largest distance from a vertex of `source` (mapped to `source_points` in the target's frame)
@@ -294,7 +370,7 @@ inline Exact_separation exact_separation(const Exact_mesh& a, const Rigid_transf
             view.fixed, view.fixed.transformed_points(fixed_to_moved), fixed_to_moved, view.moved, depth);
         return result;
     }
-    result.distance = internal::surface_distance(view);
+    result.distance = internal::surface_gap(view).distance;
     result.containment = internal::containment_without_contact(a, pose_a, b, pose_b);
     return result;
 }
