@@ -397,7 +397,7 @@ void register_distance(CLI::App& app)
     cmd->add_option("--max-distance", o->max_distance,
                     "Farther apart than D (world units, >= 0): report only that (distance inf); default: no limit");
     cmd->add_option("--tolerance", o->tolerance,
-                    "Absolute tolerance of the witness refinement (world units, > 0); default: 0.02 times the smaller "
+                    "Absolute tolerance of the witness refinement (world units, > 0); default: 0.01 times the smaller "
                     "sampling radius");
     cmd->add_option("--relative-tolerance", o->relative_tolerance,
                     "Relative tolerance of the witness refinement (>= 0, default 0)");

@@ -176,7 +176,7 @@ std::string number_text(double x)
 
 const std::string options_doc = R"doc(absolute_tolerance : float, optional
     The witness refinement stops when a step shortens the distance by less than
-    max(absolute_tolerance, relative_tolerance * distance). None (default): 0.02 times the smaller
+    max(absolute_tolerance, relative_tolerance * distance). None (default): 0.01 times the smaller
     sampling radius. Finite and > 0.
 relative_tolerance : float, optional
     See absolute_tolerance (default 0; finite and >= 0).

@@ -18,7 +18,7 @@ namespace PCCD {
 /// instance may be shared by any number of concurrent queries.
 struct Distance_options {
     /// The refinement of the witness points stops when a step shortens their distance by less than
-    /// max(absolute_tolerance, relative_tolerance * distance). Unset (default): 0.02 times the
+    /// max(absolute_tolerance, relative_tolerance * distance). Unset (default): 0.01 times the
     /// smaller sampling radius of the two objects. When set: finite and > 0.
     std::optional<double> absolute_tolerance = std::nullopt;
     /// See absolute_tolerance. Default 0. Must be finite and >= 0.

@@ -67,7 +67,7 @@ struct Proximity_query {
     Proximity_query(const A& a, const Rigid_transform_3<double>& pose_a, const B& b, const Rigid_transform_3<double>& pose_b,
                     const Distance_options& o, Distance_counters& counters)
         : pa(a, pose_a), pb(b, pose_b), options(o),
-          tolerance(o.absolute_tolerance.value_or(0.02 * std::min(pa.sampling_radius(), pb.sampling_radius()))),
+          tolerance(o.absolute_tolerance.value_or(0.01 * std::min(pa.sampling_radius(), pb.sampling_radius()))),
           max_step(2.0 * std::max(pa.sampling_radius(), pb.sampling_radius())),
           walk_slack(walk_slack_factor * std::min(pa.sampling_radius(), pb.sampling_radius())), start(Steady_clock::now()),
           state{counters, o.max_f_evaluations, std::nullopt}
