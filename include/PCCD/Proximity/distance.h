@@ -204,7 +204,7 @@ Distance_result run_distance(const A& a, const Rigid_transform_3<double>& pose_a
     const double walk_lower = std::min(walk.best.empty() ? bound : walk.best.front().distance, walk.pending_lower);
     r.lower_bound = std::max(0.0, walk_lower - rho);
     if (walk.best.empty()) {
-        if (!walk.stopped) { // nothing within the limit
+        if (!walk.stopped && limit) { // nothing within the limit
             r.distance = std::numeric_limits<double>::infinity();
             r.lower_bound = std::max(r.lower_bound, *limit);
         }

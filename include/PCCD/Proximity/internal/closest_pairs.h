@@ -176,7 +176,9 @@ struct Closest_pairs_traits {
         const double cut = cutoff();
         const double lower = lower_bound(i, j, cut);
         if (!(lower < cut)) return false;
-        if (!(lower < cut - slack)) {
+        // The slack applies only once k pairs are known: until then the cutoff is the caller's bound
+        // (a clearance margin, max_distance), and a pair within it must not be skipped.
+        if (best.size() == k && !(lower < cut - slack)) {
             pending_lower = std::min(pending_lower, lower);
             return false;
         }
