@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstring>
 #include <string>
+#include <string_view>
 
 namespace pccd_python {
 
@@ -69,5 +70,18 @@ void add_io(py::module_& m);
 void add_object(py::module_& m);
 void add_queries(py::module_& m);
 void add_proximity(py::module_& m);
+
+/// Reads one keyword argument of a query into `field`: TypeError naming the function, the key and
+/// the value when it has the wrong type (the options' own checks then raise ValueError).
+template <class T>
+void read_argument(T& field, const py::handle& value, const char* function, std::string_view key)
+{
+    try {
+        field = value.cast<T>();
+    } catch (const py::cast_error&) {
+        throw py::type_error(std::string(function) + "(): " + std::string(key) + " cannot be " +
+                             std::string(py::str(py::repr(value))));
+    }
+}
 
 } // namespace pccd_python

@@ -53,17 +53,6 @@ struct Distance_arguments {
     std::uint64_t first_index = 0;
 };
 
-template <class T>
-void read_argument(T& field, const py::handle& value, const char* function, std::string_view key)
-{
-    try {
-        field = value.cast<T>();
-    } catch (const py::cast_error&) {
-        throw py::type_error(std::string(function) + "(): " + std::string(key) + " cannot be " +
-                             std::string(py::str(py::repr(value))));
-    }
-}
-
 /// The keyword arguments of a call, checked by the library's rule (PCCD::internal::check_options)
 /// before any work: ValueError naming the option. An unknown key raises TypeError.
 Distance_arguments distance_arguments(const py::kwargs& kwargs, bool batch, const char* function)

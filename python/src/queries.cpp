@@ -130,17 +130,6 @@ Query_parameters parameters(const Query_arguments& arguments)
     return q;
 }
 
-template <class T>
-void read_argument(T& field, const py::handle& value, const char* function, std::string_view key)
-{
-    try {
-        field = value.cast<T>();
-    } catch (const py::cast_error&) {
-        throw py::type_error(std::string(function) + "(): " + std::string(key) + " cannot be " +
-                             std::string(py::str(py::repr(value))));
-    }
-}
-
 /// The keyword arguments of a call, parsed by hand (only the keys given are looked at: pybind11's
 /// per-argument matching of twenty defaults would cost more than a small query). An unknown key
 /// raises TypeError, like any Python function.
