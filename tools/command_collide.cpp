@@ -92,14 +92,7 @@ void run_collide(const Collide_options& o)
     const bool first_hit = o.mode == "first";
     const PCCD::Intersection_options query_options = pccd_tool::query_options(o.seed, o.hierarchy, o.budget_us);
     // Everything is read and checked before the (slow) preprocessing.
-    std::optional<std::vector<Pose_case>> cases;
-    PCCD::Rigid_transform_3<double> pose_a, pose_b;
-    if (!o.cases.empty())
-        cases = read_cases(o.cases);
-    else {
-        pose_a = option_transform(o.transform_a, "--transform-a", o.orthonormalize);
-        pose_b = option_transform(o.transform_b, "--transform-b", o.orthonormalize);
-    }
+    const auto [cases, pose_a, pose_b] = read_query_poses(o.cases, o.transform_a, o.transform_b, o.orthonormalize);
     const bool same = same_file(o.file_a, o.file_b);
     const Object_points points_a = read_object_points(o.file_a, o.normalize);
     const std::optional<Object_points> points_b =

@@ -266,14 +266,7 @@ void run_distance(const Distance_cli_options& o)
     const PCCD::Distance_options options = distance_options(o);
     std::optional<double> margin;
     if (!o.margin.empty()) margin = option_number(o.margin, "--margin", false);
-    std::optional<std::vector<Pose_case>> cases;
-    PCCD::Rigid_transform_3<double> pose_a, pose_b;
-    if (!o.cases.empty())
-        cases = read_cases(o.cases);
-    else {
-        pose_a = option_transform(o.transform_a, "--transform-a", o.orthonormalize);
-        pose_b = option_transform(o.transform_b, "--transform-b", o.orthonormalize);
-    }
+    const auto [cases, pose_a, pose_b] = read_query_poses(o.cases, o.transform_a, o.transform_b, o.orthonormalize);
     const bool same = same_file(o.file_a, o.file_b);
     const Object_points points_a = read_object_points(o.file_a, o.normalize);
     const std::optional<Object_points> points_b =

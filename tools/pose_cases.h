@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,27 @@ inline std::vector<Pose_case> read_cases(const std::string& path)
     }
     if (cases.empty()) throw PCCD::Invalid_input(path + ": no cases (expected rows of 24 numbers)");
     return cases;
+}
+
+/// The poses of a query command: the rows of the --cases file when one is given (poses unset),
+/// else the single pose pair of --transform-a and --transform-b.
+struct Query_poses {
+    std::optional<std::vector<Pose_case>> cases;
+    PCCD::Rigid_transform_3<double> pose_a;
+    PCCD::Rigid_transform_3<double> pose_b;
+};
+
+inline Query_poses read_query_poses(const std::string& cases_path, const std::vector<std::string>& transform_a,
+                                    const std::vector<std::string>& transform_b, bool orthonormalize)
+{
+    Query_poses q;
+    if (!cases_path.empty())
+        q.cases = read_cases(cases_path);
+    else {
+        q.pose_a = option_transform(transform_a, "--transform-a", orthonormalize);
+        q.pose_b = option_transform(transform_b, "--transform-b", orthonormalize);
+    }
+    return q;
 }
 
 } // namespace pccd_tool
