@@ -101,6 +101,14 @@
 #include <PCCD/Proximity/distance.h>
 #include <PCCD/Proximity/distance_many.h>
 
+// Collision worlds: many posed objects, a broad phase and the narrow-phase queries
+#include <PCCD/World/Collision_world.h>
+#include <PCCD/World/Dynamic_AABB_tree.h>
+#include <PCCD/World/World_handle.h>
+#include <PCCD/World/World_options.h>
+#include <PCCD/World/World_results.h>
+#include <PCCD/World/world_box.h>
+
 // Kinetic AABB trees
 #include <PCCD/Kinetic/Cubic.h>
 #include <PCCD/Kinetic/Deformation.h>
