@@ -4,8 +4,8 @@
 // requirement, that the concept rejects. The archetypes wrap real models, so the algorithms also run
 // on them and must give the same answers as on the models.
 //
-// Concepts covered: CollisionObject, ProximityObject (distance, within_distance, contacts) and LeafIntersector (do_intersect, intersection_points, both
-// policies, both path choices, the batch queries), PathSource (the interpolation search's role),
+// Concepts covered: CollisionObject, ProximityObject (distance, within_distance, contacts, Collision_world) and LeafIntersector (do_intersect, intersection_points, both
+// policies, both path choices, the batch queries, Collision_world), PathSource (the interpolation search's role),
 // SurfaceDistance and SurfaceWeight (WLS_surface, estimate_normals), PointCloudKernel (Point_cloud,
 // both distances, the graphs, the sampling radius, outliers, the domain, Point_cloud_object) and
 // ReadablePointMap (Point_cloud_object, then the queries),
@@ -24,6 +24,9 @@
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Proximity/contacts.h>
 #include <PCCD/Proximity/distance.h>
+#include <PCCD/World/Collision_world.h>
+
+#include <memory>
 #include <PCCD/Proximity_graph/graph_components.h>
 #include <PCCD/Proximity_graph/knn_graph.h>
 #include <PCCD/Proximity_graph/prune_long_edges.h>
@@ -631,6 +634,29 @@ TEST_CASE("the batch queries run on collision-object archetypes as on the model"
         CHECK(found[k].counters.f_evaluations == expected[k].counters.f_evaluations);
         CHECK(points[k].intersects == expected[k].intersects);
     }
+}
+
+TEST_CASE("a collision world runs on proximity-object archetypes as on the model", "[concepts]")
+{
+    const auto sample = sample_shape(unit_sphere(), 2000, 0.0, 97);
+    const auto object = std::make_shared<const archetype::Object>(columns(sample.points));
+    const auto arch = std::make_shared<const archetype::Proximity_object>(*object);
+    PCCD::Collision_world<archetype::Object> on_model;
+    PCCD::Collision_world<archetype::Proximity_object> on_archetype;
+    for (const double shift : {0.0, 1.5, 3.0, 6.5, 7.0}) {
+        const PCCD::Rigid_transform_3<double> pose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(shift, 0.0, 0.0));
+        on_model.insert(object, pose);
+        on_archetype.insert(arch, pose);
+    }
+    const auto expected = on_model.intersecting_pairs();
+    const auto found = on_archetype.intersecting_pairs();
+    REQUIRE(expected.size() == 3); // 0-1.5, 1.5-3, 6.5-7
+    REQUIRE(found.size() == expected.size());
+    for (std::size_t k = 0; k < found.size(); ++k) CHECK(found[k] == expected[k]);
+    const PCCD::World_handle first = on_archetype.handles().front();
+    CHECK(on_archetype.within_distance(first, 0.2).size() == on_model.within_distance(on_model.handles().front(), 0.2).size());
+    CHECK(on_archetype.intersecting(*arch, PCCD::Rigid_transform_3<double>()).size() == 2);
+    CHECK(on_archetype.overlapping(Eigen::AlignedBox3d(Eigen::Vector3d::Constant(-0.1), Eigen::Vector3d::Constant(0.1))).empty());
 }
 
 TEST_CASE("the preprocessing runs on the kernel archetype as on the default kernel", "[concepts]")
