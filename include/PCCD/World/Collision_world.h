@@ -374,7 +374,7 @@ public:
     /// with the box up to the sampling radius. \throws Invalid_input for an empty or non-finite box.
     std::vector<World_handle> overlapping(const Box& box) const
     {
-        if (box.isEmpty() || !box.min().allFinite() || !box.max().allFinite())
+        if (!box.min().allFinite() || !box.max().allFinite() || box.isEmpty())
             throw Invalid_input(internal::concat("Collision_world::overlapping: the box [", box.min().transpose(), "] - [",
                                        box.max().transpose(), "] is empty or not finite"));
         std::vector<std::uint32_t> candidates;

@@ -69,7 +69,7 @@ public:
     {
         if (!(std::isfinite(options.fat_margin) && options.fat_margin >= 0.0))
             throw Invalid_input(internal::concat("Dynamic_AABB_tree: fat_margin ", options.fat_margin, " must be finite and >= 0"));
-        if (!(options.rebuild_ratio > 1.0)) // NaN fails too
+        if (!std::isgreater(options.rebuild_ratio, 1.0)) // NaN fails too (without a floating-point exception)
             throw Invalid_input(internal::concat("Dynamic_AABB_tree: rebuild_ratio ", options.rebuild_ratio,
                                        " must be > 1 (+infinity: never rebuild)"));
     }
@@ -188,13 +188,16 @@ public:
     void for_each_crossed(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, double t_max, F&& f) const
     {
         if (m_root == null) return;
-        const Eigen::Vector3d inverse = direction.cwiseInverse();
+        if (!origin.allFinite() || !direction.allFinite() || std::isnan(t_max))
+            throw Invalid_input(internal::concat("Dynamic_AABB_tree::for_each_crossed: origin [", origin.transpose(),
+                                                 "], direction [", direction.transpose(), "] and t_max ", t_max,
+                                                 " must be finite (t_max may be +infinity)"));
         std::vector<Node_index> stack{m_root};
         while (!stack.empty()) {
             const Node& n = m_nodes[stack.back()];
             stack.pop_back();
             double t_enter = 0.0;
-            if (!crosses(n.box, origin, inverse, t_max, t_enter)) continue;
+            if (!crosses(n.box, origin, direction, t_max, t_enter)) continue;
             if (n.is_leaf()) {
                 if (!call(f, n.id, t_enter)) return;
                 continue;
@@ -284,7 +287,7 @@ private:
 
     static void check_box(const Box& box, const char* function)
     {
-        if (box.isEmpty() || !box.min().allFinite() || !box.max().allFinite())
+        if (!box.min().allFinite() || !box.max().allFinite() || box.isEmpty())
             throw Invalid_input(internal::concat(function, ": the box [", box.min().transpose(), "] - [", box.max().transpose(),
                                        "] is empty or not finite"));
     }
@@ -294,17 +297,19 @@ private:
         if (!alive(proxy)) throw Invalid_input(internal::concat(function, ": proxy ", proxy, " is not in the tree"));
     }
 
-    static bool crosses(const Box& box, const Eigen::Vector3d& origin, const Eigen::Vector3d& inverse, double t_max,
+    /// Whether the segment origin + t direction, t in [0, t_max], meets `box`; its entry t then.
+    /// Axes along which the direction is 0 are tested as slabs (no division by zero).
+    static bool crosses(const Box& box, const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, double t_max,
                         double& t_enter)
     {
         double t0 = 0.0, t1 = t_max;
         for (int k = 0; k < 3; ++k) {
-            double a = (box.min()[k] - origin[k]) * inverse[k];
-            double b = (box.max()[k] - origin[k]) * inverse[k];
-            if (std::isnan(a) || std::isnan(b)) { // direction 0 along k and the origin on a face plane
+            if (direction[k] == 0.0) {
                 if (origin[k] < box.min()[k] || origin[k] > box.max()[k]) return false;
                 continue;
             }
+            double a = (box.min()[k] - origin[k]) / direction[k];
+            double b = (box.max()[k] - origin[k]) / direction[k];
             if (a > b) std::swap(a, b);
             t0 = std::max(t0, a);
             t1 = std::min(t1, b);
