@@ -264,6 +264,32 @@ TEST_CASE("Collision_world: one-object queries agree with brute force", "[world]
         // Everything that intersects is within any margin.
         for (const World_handle h : got) CHECK(std::find(near.begin(), near.end(), h) != near.end());
     }
+    // The callback forms stop early and agree with the lists.
+    for (const World_handle h : world.handles()) {
+        const auto all = world.intersecting(h);
+        if (all.size() < 2) continue;
+        std::vector<World_handle> first;
+        world.for_each_intersecting(h, [&](const PCCD::World_hit& hit) {
+            first.push_back(hit.handle);
+            return false;
+        });
+        REQUIRE(first.size() == 1);
+        CHECK(first[0] == all[0].handle);
+        break;
+    }
+    {
+        const Eigen::AlignedBox3d everything(Eigen::Vector3d::Constant(-10.0), Eigen::Vector3d::Constant(side + 10.0));
+        CHECK(world.overlapping(everything) == world.handles());
+        int calls = 0;
+        world.for_each_overlapping(everything, [&](World_handle) { return ++calls < 4; });
+        CHECK(calls == 4);
+        calls = 0;
+        world.for_each_within_distance(world.handles()[1], 50.0, [&](const PCCD::World_proximity& w) {
+            CHECK(w.clearance.within);
+            return ++calls < 2;
+        });
+        CHECK(calls == 2);
+    }
     // within_distance of an instance.
     const World_handle h0 = world.handles().front();
     std::vector<World_handle> near_expected;

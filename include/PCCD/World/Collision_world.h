@@ -301,23 +301,33 @@ public:
     /// \throws Invalid_input for a stale handle.
     std::vector<World_hit> intersecting(World_handle h) const
     {
+        std::vector<World_hit> out;
+        for_each_intersecting(h, [&](const World_hit& hit) { out.push_back(hit); });
+        return out;
+    }
+
+    /// Calls `f(const World_hit&)` for each hit intersecting(h) would return, in its order; `f`
+    /// may return bool, false stopping the query. The instances are answered in parallel blocks;
+    /// `f` runs on the calling thread.
+    template <class F>
+    void for_each_intersecting(World_handle h, F&& f) const
+    {
         const Slot& s = slot(h, "Collision_world::intersecting");
         std::vector<std::uint32_t> others;
         m_tree.for_each_overlapping(s.box, [&](std::uint32_t j) {
             if (j != h.index && s.box.intersects(m_slots[j].box) && allowed(h.index, j)) others.push_back(j);
         });
         std::sort(others.begin(), others.end());
-        std::vector<Cache_entry> answers(others.size());
-        run_parallel(others.size(), [&](std::size_t t) {
-            answers[t] = answer(Candidate{std::min(h.index, others[t]), std::max(h.index, others[t]),
-                                          world_pair_key(h.index, others[t])});
-        });
-        std::vector<World_hit> out;
-        for (std::size_t t = 0; t < others.size(); ++t)
-            if (answers[t].status != Intersection_status::separate)
-                out.push_back(World_hit{World_handle{others[t], m_slots[others[t]].generation}, answers[t].status,
-                                        answers[t].point});
-        return out;
+        in_blocks<Cache_entry>(
+            others.size(),
+            [&](std::size_t t) {
+                return answer(Candidate{std::min(h.index, others[t]), std::max(h.index, others[t]),
+                                        world_pair_key(h.index, others[t])});
+            },
+            [&](std::size_t t, const Cache_entry& e) {
+                if (e.status == Intersection_status::separate) return true;
+                return call(f, World_hit{World_handle{others[t], m_slots[others[t]].generation}, e.status, e.point});
+            });
     }
 
     /// The instances whose surfaces a query object `query` at `pose` intersects (or might), in
@@ -328,22 +338,35 @@ public:
         requires LeafIntersector<Policy, Query, Object>
     std::vector<World_hit> intersecting(const Query& query, const Pose& pose, const Collision_filter& filter = {}) const
     {
+        std::vector<World_hit> out;
+        for_each_intersecting(query, pose, filter, [&](const World_hit& hit) { out.push_back(hit); });
+        return out;
+    }
+
+    /// Calls `f(const World_hit&)` for each hit intersecting(query, pose, filter) would return, in
+    /// its order; `f` may return bool, false stopping the query.
+    template <CollisionObject Query, class F>
+        requires LeafIntersector<Policy, Query, Object>
+    void for_each_intersecting(const Query& query, const Pose& pose, const Collision_filter& filter, F&& f) const
+    {
         const Box qbox = world_box(query, pose);
         std::vector<std::uint32_t> others;
         m_tree.for_each_overlapping(qbox, [&](std::uint32_t j) {
             if (qbox.intersects(m_slots[j].box) && may_collide(filter, m_slots[j].filter)) others.push_back(j);
         });
         std::sort(others.begin(), others.end());
-        std::vector<World_hit> answers(others.size());
-        run_parallel(others.size(), [&](std::size_t t) {
-            const Slot& o = m_slots[others[t]];
-            Intersection_options options = m_options.intersection;
-            options.seed = pair_seed(options.seed, others[t]);
-            const Intersection_result r = do_intersect(query, pose, *o.object, o.pose, options, m_policy);
-            answers[t] = World_hit{World_handle{others[t], o.generation}, r.status, first_point(r)};
-        });
-        std::erase_if(answers, [](const World_hit& w) { return w.status == Intersection_status::separate; });
-        return answers;
+        in_blocks<World_hit>(
+            others.size(),
+            [&](std::size_t t) {
+                const Slot& o = m_slots[others[t]];
+                Intersection_options options = m_options.intersection;
+                options.seed = pair_seed(options.seed, others[t]);
+                const Intersection_result r = do_intersect(query, pose, *o.object, o.pose, options, m_policy);
+                return World_hit{World_handle{others[t], o.generation}, r.status, first_point(r)};
+            },
+            [&](std::size_t, const World_hit& hit) {
+                return hit.status == Intersection_status::separate ? true : call(f, hit);
+            });
     }
 
     /// The instances whose surfaces come within `margin` of instance `h`'s (PCCD::within_distance
@@ -353,20 +376,43 @@ public:
     std::vector<World_proximity> within_distance(World_handle h, double margin) const
         requires ProximityObject<Object>
     {
+        std::vector<World_proximity> out;
+        for_each_within_distance(h, margin, [&](const World_proximity& w) { out.push_back(w); });
+        return out;
+    }
+
+    /// Calls `f(const World_proximity&)` for each answer within_distance(h, margin) would return,
+    /// in its order; `f` may return bool, false stopping the query.
+    template <class F>
+    void for_each_within_distance(World_handle h, double margin, F&& f) const
+        requires ProximityObject<Object>
+    {
         const Slot& s = slot(h, "Collision_world::within_distance");
         check_margin(margin);
-        return near_instances(*s.object, s.pose, margin, [&](std::uint32_t j) { return j != h.index && allowed(h.index, j); });
+        near_instances(*s.object, s.pose, margin, [&](std::uint32_t j) { return j != h.index && allowed(h.index, j); }, f);
     }
 
     /// The instances whose surfaces come within `margin` of a query object at `pose`, among those
-    /// whose filter agrees with `filter`.
+    /// whose filter agrees with `filter`, in increasing index order.
     template <ProximityObject Query>
     std::vector<World_proximity> within_distance(const Query& query, const Pose& pose, double margin,
                                                  const Collision_filter& filter = {}) const
         requires ProximityObject<Object>
     {
+        std::vector<World_proximity> out;
+        for_each_within_distance(query, pose, margin, filter, [&](const World_proximity& w) { out.push_back(w); });
+        return out;
+    }
+
+    /// Calls `f(const World_proximity&)` for each answer within_distance(query, pose, margin,
+    /// filter) would return, in its order; `f` may return bool, false stopping the query.
+    template <ProximityObject Query, class F>
+    void for_each_within_distance(const Query& query, const Pose& pose, double margin, const Collision_filter& filter,
+                                  F&& f) const
+        requires ProximityObject<Object>
+    {
         check_margin(margin);
-        return near_instances(query, pose, margin, [&](std::uint32_t j) { return may_collide(filter, m_slots[j].filter); });
+        near_instances(query, pose, margin, [&](std::uint32_t j) { return may_collide(filter, m_slots[j].filter); }, f);
     }
 
     /// The instances with at least one cloud point inside `box` (world frame, boundary included),
@@ -374,23 +420,33 @@ public:
     /// with the box up to the sampling radius. \throws Invalid_input for an empty or non-finite box.
     std::vector<World_handle> overlapping(const Box& box) const
     {
+        std::vector<World_handle> out;
+        for_each_overlapping(box, [&](World_handle h) { out.push_back(h); });
+        return out;
+    }
+
+    /// Calls `f(World_handle)` for each instance overlapping(box) would return, in its order; `f`
+    /// may return bool, false stopping the query.
+    template <class F>
+    void for_each_overlapping(const Box& box, F&& f) const
+    {
         if (!box.min().allFinite() || !box.max().allFinite() || box.isEmpty())
             throw Invalid_input(internal::concat("Collision_world::overlapping: the box [", box.min().transpose(), "] - [",
-                                       box.max().transpose(), "] is empty or not finite"));
+                                                 box.max().transpose(), "] is empty or not finite"));
         std::vector<std::uint32_t> candidates;
         m_tree.for_each_overlapping(box, [&](std::uint32_t j) {
             if (box.intersects(m_slots[j].box)) candidates.push_back(j);
         });
         std::sort(candidates.begin(), candidates.end());
-        std::vector<char> inside(candidates.size(), 0);
-        run_parallel(candidates.size(), [&](std::size_t t) {
-            const Slot& o = m_slots[candidates[t]];
-            inside[t] = has_point_in(*o.object, o.pose, box);
-        });
-        std::vector<World_handle> out;
-        for (std::size_t t = 0; t < candidates.size(); ++t)
-            if (inside[t]) out.push_back(World_handle{candidates[t], m_slots[candidates[t]].generation});
-        return out;
+        in_blocks<char>(
+            candidates.size(),
+            [&](std::size_t t) {
+                const Slot& o = m_slots[candidates[t]];
+                return char(has_point_in(*o.object, o.pose, box));
+            },
+            [&](std::size_t t, char inside) {
+                return inside ? call(f, World_handle{candidates[t], m_slots[candidates[t]].generation}) : true;
+            });
     }
     /// @}
 
@@ -546,8 +602,8 @@ private:
         return e;
     }
 
-    template <class Query, class Accept>
-    std::vector<World_proximity> near_instances(const Query& query, const Pose& pose, double margin, const Accept& accept) const
+    template <class Query, class Accept, class F>
+    void near_instances(const Query& query, const Pose& pose, double margin, const Accept& accept, F& f) const
     {
         Box qbox = world_box(query, pose);
         qbox.min().array() -= margin;
@@ -557,14 +613,31 @@ private:
             if (qbox.intersects(m_slots[j].box) && accept(j)) others.push_back(j);
         });
         std::sort(others.begin(), others.end());
-        std::vector<World_proximity> answers(others.size());
-        run_parallel(others.size(), [&](std::size_t t) {
-            const Slot& o = m_slots[others[t]];
-            answers[t] = World_proximity{World_handle{others[t], o.generation},
-                                         PCCD::within_distance(query, pose, *o.object, o.pose, margin, m_options.distance)};
-        });
-        std::erase_if(answers, [](const World_proximity& w) { return !w.clearance.within; });
-        return answers;
+        in_blocks<World_proximity>(
+            others.size(),
+            [&](std::size_t t) {
+                const Slot& o = m_slots[others[t]];
+                return World_proximity{World_handle{others[t], o.generation},
+                                       PCCD::within_distance(query, pose, *o.object, o.pose, margin, m_options.distance)};
+            },
+            [&](std::size_t, const World_proximity& w) { return w.clearance.within ? call(f, w) : true; });
+    }
+
+    /// Computes `compute(t)` for t in [0, n) in parallel blocks and hands each answer to
+    /// `consume(t, answer)` in index order on the calling thread, stopping when it returns false
+    /// (the blocks after it are not computed).
+    template <class Answer, class Compute, class Consume>
+    void in_blocks(std::size_t n, const Compute& compute, const Consume& consume) const
+    {
+        const std::size_t block = std::max<std::size_t>(64, 16 * worker_count());
+        std::vector<Answer> answers;
+        for (std::size_t begin = 0; begin < n; begin += block) {
+            const std::size_t end = std::min(n, begin + block);
+            answers.assign(end - begin, Answer{});
+            run_parallel(end - begin, [&](std::size_t t) { answers[t] = compute(begin + t); });
+            for (std::size_t t = begin; t < end; ++t)
+                if (!consume(t, answers[t - begin])) return;
+        }
     }
 
     /// Whether a cloud point of `object` at `pose` lies in the world box `box`: a walk of its
