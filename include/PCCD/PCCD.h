@@ -26,6 +26,7 @@
 #include <PCCD/concepts/PathSource.h>
 #include <PCCD/concepts/PointCloudKernel.h>
 #include <PCCD/concepts/ProximityObject.h>
+#include <PCCD/concepts/RigidMotion.h>
 #include <PCCD/concepts/ProximityGraph.h>
 #include <PCCD/concepts/ReadablePointMap.h>
 #include <PCCD/concepts/SurfaceDistance.h>
@@ -100,6 +101,11 @@
 #include <PCCD/Proximity/contacts.h>
 #include <PCCD/Proximity/distance.h>
 #include <PCCD/Proximity/distance_many.h>
+
+// Continuous collision: rigid motions and the first contact time
+#include <PCCD/Continuous/Contact_time_options.h>
+#include <PCCD/Continuous/Rigid_motion.h>
+#include <PCCD/Continuous/time_of_contact.h>
 
 // Collision worlds: many posed objects, a broad phase and the narrow-phase queries
 #include <PCCD/World/Collision_world.h>

@@ -24,6 +24,7 @@ STAGES = [
     ("object", ["Point_cloud_object*", "make_point_cloud_object.h"]),
     ("intersection", ["Intersection/"]),
     ("proximity", ["Proximity/"]),
+    ("continuous", ["Continuous/"]),
     ("world", ["World/"]),
     ("kinetic", ["Kinetic/"]),
     ("exact", ["Exact/"]),

@@ -1,0 +1,241 @@
+// PCCD/Continuous/time_of_contact.h -- time_of_contact(), continuous collision detection between
+// two point-cloud objects moving rigidly over t in [0, 1]: conservative advancement on a certified
+// lower bound of the surfaces' distance (the closest-pair walk of the proximity queries), contact
+// checks at short sub-steps where that bound cannot exclude contact, and bisection of the first
+// contact time (doc/algorithms.md, "Continuous collision"; doc/manual/continuous.md).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <optional>
+
+#include <Eigen/Core>
+
+#include <PCCD/Continuous/Contact_time_options.h>
+#include <PCCD/Continuous/Rigid_motion.h>
+#include <PCCD/Error.h>
+#include <PCCD/Intersection/do_intersect.h>
+#include <PCCD/Proximity/distance.h>
+#include <PCCD/Rigid_transform_3.h>
+#include <PCCD/concepts/ProximityObject.h>
+#include <PCCD/concepts/RigidMotion.h>
+
+namespace PCCD {
+
+namespace internal {
+
+/// One contact check of time_of_contact: whether the surfaces are within the tolerance at a time,
+/// with a contact point and normal when they are.
+struct Contact_check {
+    bool contact = false;
+    Eigen::Vector3d point = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+    Eigen::Vector3d normal = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+};
+
+template <class A, class MA, class B, class MB>
+class Contact_time_query {
+public:
+    Contact_time_query(const A& a, const MA& motion_a, const B& b, const MB& motion_b, const Contact_time_options& options,
+                       Contact_time_counters& counters)
+        : m_a(a), m_b(b), m_motion_a(motion_a), m_motion_b(motion_b), m_options(options), m_counters(counters)
+    {
+        const auto& ra = a.hierarchy().root().box;
+        const auto& rb = b.hierarchy().root().box;
+        m_speed = double(motion_a.max_point_speed(ra.center(), 0.5 * ra.diagonal().norm())) +
+                  double(motion_b.max_point_speed(rb.center(), 0.5 * rb.diagonal().norm()));
+        if (!(std::isfinite(m_speed) && m_speed >= 0.0))
+            throw Invalid_input(concat("time_of_contact: the motions' speed bound ", m_speed, " is not finite"));
+        const double r_a = double(a.sampling_radius()), r_b = double(b.sampling_radius());
+        m_rho = r_a + 2.0 * double(a.noise_estimate()) + r_b + 2.0 * double(b.noise_estimate());
+        const double r_min = std::min(r_a, r_b);
+        m_accuracy = options.time_accuracy.value_or(0.1 * r_min);
+        m_near = options.near_step * r_min;
+    }
+
+    double speed() const { return m_speed; }
+    double accuracy() const { return m_accuracy; }
+    double near() const { return m_near; }
+
+    /// A lower bound of the distance between the surfaces at time t (certified as the proximity
+    /// queries' lower_bound: the point pairs' distance minus both surfaces' radii), or a value >=
+    /// `limit` when nothing is closer than `limit`.
+    double lower_bound(double t, double limit)
+    {
+        ++m_counters.advancement_steps;
+        Distance_counters dc;
+        Proximity_query<A, B> q(m_a, m_motion_a.pose(t), m_b, m_motion_b.pose(t), m_options.distance, dc);
+        const auto walk = q.closest_pairs(1, limit + m_rho);
+        m_counters.node_pairs += dc.node_pairs;
+        const double point_lower = std::min(walk.best.empty() ? limit + m_rho : walk.best.front().distance, walk.pending_lower);
+        return point_lower - m_rho;
+    }
+
+    /// Whether the surfaces are within the tolerance at time t.
+    Contact_check check(double t)
+    {
+        const Rigid_transform_3<double> pa = m_motion_a.pose(t), pb = m_motion_b.pose(t);
+        Contact_check c;
+        if (m_options.tolerance == 0.0) {
+            const Intersection_result r = do_intersect(m_a, pa, m_b, pb, m_options.distance.intersection);
+            m_counters.f_evaluations += r.counters.f_evaluations;
+            // An undecided answer (a budget of the intersection options ran out) counts as contact:
+            // a missed contact is the worse error.
+            c.contact = r.status != Intersection_status::separate;
+            if (!r.points.empty()) {
+                c.point = r.points.front().position;
+                c.normal = crossing_normal(pa, pb, c.point);
+            }
+            return c;
+        }
+        const Clearance_result r = within_distance(m_a, pa, m_b, pb, m_options.tolerance, m_options.distance);
+        m_counters.f_evaluations += r.counters.f_evaluations;
+        m_counters.node_pairs += r.counters.node_pairs;
+        c.contact = r.within || r.status == Intersection_status::undecided;
+        if (r.within && r.status == Intersection_status::separate) {
+            c.point = 0.5 * (r.point_a + r.point_b);
+            const Eigen::Vector3d d = r.point_b - r.point_a;
+            c.normal = d.norm() > 0.0 ? Eigen::Vector3d(d.normalized()) : crossing_normal(pa, pb, c.point);
+        } else if (r.within) {
+            const Intersection_result i = do_intersect(m_a, pa, m_b, pb, m_options.distance.intersection);
+            if (!i.points.empty()) {
+                c.point = i.points.front().position;
+                c.normal = crossing_normal(pa, pb, c.point);
+            }
+        }
+        return c;
+    }
+
+private:
+    /// n_A - n_B at a crossing point, normalized: the direction in which B must move to leave A.
+    Eigen::Vector3d crossing_normal(const Rigid_transform_3<double>& pa, const Rigid_transform_3<double>& pb,
+                                    const Eigen::Vector3d& x) const
+    {
+        const Surface_evaluation ea = m_a.surface().evaluate(pa.inverse().transform_point(x));
+        const Surface_evaluation eb = m_b.surface().evaluate(pb.inverse().transform_point(x));
+        if (ea.defined() && eb.defined()) {
+            const Eigen::Vector3d n = pa.rotation() * ea.normal - pb.rotation() * eb.normal;
+            if (n.norm() > 0.0) return n.normalized();
+        }
+        return Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+    }
+
+    const A& m_a;
+    const B& m_b;
+    const MA& m_motion_a;
+    const MB& m_motion_b;
+    const Contact_time_options& m_options;
+    Contact_time_counters& m_counters;
+    double m_speed = 0.0;
+    double m_rho = 0.0;
+    double m_accuracy = 0.0;
+    double m_near = 0.0;
+};
+
+} // namespace internal
+
+/// The first time in [0, 1] at which the implicit surfaces of `a` moving by `motion_a` and `b`
+/// moving by `motion_b` come within options.tolerance of each other (intersect, for the default
+/// tolerance 0).
+///
+/// Method: conservative advancement. At time t a walk of the two hierarchies bounds the surfaces'
+/// distance from below by L (the closest point pairs minus both surfaces' radii r(P) + 2 sigma, as
+/// the lower_bound of distance()); no point moves faster than v (the motions' max_point_speed over
+/// the clouds' bounding balls, both objects summed), so the surfaces stay farther apart than the
+/// tolerance until t + (L - tolerance) / v, and t advances by that much. Where L - tolerance is
+/// below near_step r_min (the bound cannot exclude contact), the surfaces are checked for contact
+/// (do_intersect, or within_distance for a positive tolerance) at sub-steps of near_step r_min / v
+/// until a check finds contact or L rises again. A contact found is bracketed by bisection until no
+/// point moves farther than time_accuracy within the bracket.
+///
+/// Guarantee: (1) where the lower bound holds (it does wherever the surfaces lie within r(P) +
+/// 2 sigma of their samples, the premise of the proximity queries' interval), `no_contact` means the
+/// surfaces stayed farther apart than the tolerance over [0, 1] except possibly for contacts that
+/// begin and end between two sub-steps of the near band, which move no point farther than
+/// near_step r_min relative to the other object: such a contact is shallower than that (half a
+/// sampling radius by default); (2) `contact` at t means a check found the surfaces within the
+/// tolerance at t, and no check and no bound found contact before t_low; the bracket satisfies
+/// v (t_high - t_low) <= time_accuracy. The time is that of the first contact found: with the
+/// exception of (1), the first contact.
+///
+/// \tparam A, B models of ProximityObject (Point_cloud_object<K>).
+/// \tparam MA, MB models of RigidMotion (Linear_motion, Screw_motion).
+/// \throws Invalid_input for invalid options (the message names the field), or motions whose speed
+///         bound is not finite.
+/// Thread safety: the objects and motions are only read; any number of calls may run concurrently.
+/// The result depends only on the arguments (seeds included) unless a time budget is set in
+/// options.distance.
+/// Complexity: one hierarchy walk per advancement step (O(height) node pairs for well separated
+/// objects; the steps grow like log(1 / gap) on approach), one contact check per near sub-step and
+/// per bisection step (about log2(v / time_accuracy)).
+template <ProximityObject A, RigidMotion MA, ProximityObject B, RigidMotion MB>
+Contact_time_result time_of_contact(const A& a, const MA& motion_a, const B& b, const MB& motion_b,
+                                    const Contact_time_options& options = {})
+{
+    internal::check_options(options, "time_of_contact");
+    Contact_time_result r;
+    internal::Contact_time_query<A, MA, B, MB> q(a, motion_a, b, motion_b, options, r.counters);
+    const double v = q.speed();
+    const double tol = options.tolerance;
+    std::size_t steps = 0;
+    double t = 0.0;
+    double clear = -1.0; // the last time known free of contact (-1: none yet)
+    std::optional<internal::Contact_check> found;
+    while (true) {
+        if (++steps > options.max_steps) {
+            r.status = Contact_time_status::undecided;
+            r.t_low = std::max(0.0, clear);
+            return r;
+        }
+        const double remaining = v * (1.0 - t); // the farthest any point can still move relative to the other object
+        const double lower = q.lower_bound(t, tol + remaining + q.near());
+        if (lower > tol + remaining) { // nothing can come within the tolerance before t = 1
+            r.status = Contact_time_status::no_contact;
+            r.t_low = 1.0;
+            return r;
+        }
+        if (lower - tol >= q.near()) { // advance: certified free of contact until t + (lower - tol) / v
+            clear = t;
+            t = std::min(1.0, t + (lower - tol) / v);
+            continue;
+        }
+        // The near band: check this time, then a short sub-step.
+        ++r.counters.near_checks;
+        internal::Contact_check c = q.check(t);
+        if (c.contact) {
+            found = c;
+            break;
+        }
+        clear = t;
+        if (t >= 1.0 || v == 0.0) {
+            r.status = Contact_time_status::no_contact;
+            r.t_low = 1.0;
+            return r;
+        }
+        t = std::min(1.0, t + q.near() / v);
+    }
+    // Contact at t; bisect between the last clear time and t.
+    double low = clear < 0.0 ? t : clear;
+    double high = t;
+    while (v * (high - low) > q.accuracy()) {
+        if (++steps > options.max_steps) break;
+        ++r.counters.bisection_steps;
+        const double mid = 0.5 * (low + high);
+        internal::Contact_check c = q.check(mid);
+        if (c.contact) {
+            high = mid;
+            found = c;
+        } else {
+            low = mid;
+        }
+    }
+    r.status = Contact_time_status::contact;
+    r.t = r.t_high = high;
+    r.t_low = low;
+    r.point = found->point;
+    r.normal = found->normal;
+    return r;
+}
+
+} // namespace PCCD
