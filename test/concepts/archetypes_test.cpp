@@ -4,7 +4,7 @@
 // requirement, that the concept rejects. The archetypes wrap real models, so the algorithms also run
 // on them and must give the same answers as on the models.
 //
-// Concepts covered: CollisionObject, ProximityObject (distance, within_distance, contacts, Collision_world) and LeafIntersector (do_intersect, intersection_points, both
+// Concepts covered: RigidMotion (time_of_contact), CollisionObject, ProximityObject (distance, within_distance, contacts, Collision_world) and LeafIntersector (do_intersect, intersection_points, both
 // policies, both path choices, the batch queries, Collision_world), PathSource (the interpolation search's role),
 // SurfaceDistance and SurfaceWeight (WLS_surface, estimate_normals), PointCloudKernel (Point_cloud,
 // both distances, the graphs, the sampling radius, outliers, the domain, Point_cloud_object) and
@@ -24,7 +24,9 @@
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Proximity/contacts.h>
 #include <PCCD/Proximity/distance.h>
+#include <PCCD/Continuous/time_of_contact.h>
 #include <PCCD/World/Collision_world.h>
+#include <PCCD/concepts/RigidMotion.h>
 
 #include <memory>
 #include <PCCD/Proximity_graph/graph_components.h>
@@ -634,6 +636,47 @@ TEST_CASE("the batch queries run on collision-object archetypes as on the model"
         CHECK(found[k].counters.f_evaluations == expected[k].counters.f_evaluations);
         CHECK(points[k].intersects == expected[k].intersects);
     }
+}
+
+namespace archetype {
+/// Exactly what RigidMotion requires, over a Linear_motion.
+class Motion {
+public:
+    explicit Motion(const PCCD::Linear_motion& m) : m_motion(m) {}
+    PCCD::Rigid_transform_3<double> pose(double t) const { return m_motion.pose(t); }
+    double max_point_speed(const Eigen::Vector3d& c, double r) const { return m_motion.max_point_speed(c, r); }
+
+private:
+    PCCD::Linear_motion m_motion;
+};
+struct Motion_without_speed {
+    PCCD::Rigid_transform_3<double> pose(double t) const;
+};
+struct Motion_with_matrix_pose {
+    Eigen::Matrix4d pose(double t) const;
+    double max_point_speed(const Eigen::Vector3d& c, double r) const;
+};
+} // namespace archetype
+
+static_assert(PCCD::RigidMotion<archetype::Motion>);
+static_assert(!PCCD::RigidMotion<archetype::Motion_without_speed>);
+static_assert(!PCCD::RigidMotion<archetype::Motion_with_matrix_pose>);
+
+TEST_CASE("continuous collision runs on motion and proximity-object archetypes as on the models", "[concepts]")
+{
+    const auto sample = sample_shape(unit_sphere(), 2000, 0.0, 96);
+    const archetype::Object object(columns(sample.points));
+    const archetype::Proximity_object arch(object);
+    const PCCD::Rigid_transform_3<double> origin;
+    const PCCD::Linear_motion still(origin, origin);
+    const PCCD::Linear_motion through(PCCD::Rigid_transform_3<double>(Eigen::Matrix3d::Identity(), Eigen::Vector3d(4, 0, 0)),
+                                      PCCD::Rigid_transform_3<double>(Eigen::Matrix3d::Identity(), Eigen::Vector3d(-4, 0, 0)));
+    const auto model = PCCD::time_of_contact(object, still, object, through);
+    const auto with_archetypes = PCCD::time_of_contact(arch, archetype::Motion(still), arch, archetype::Motion(through));
+    CHECK(model.status == PCCD::Contact_time_status::contact);
+    CHECK(with_archetypes.status == model.status);
+    CHECK(with_archetypes.t == model.t);
+    CHECK(with_archetypes.counters == model.counters);
 }
 
 TEST_CASE("a collision world runs on proximity-object archetypes as on the model", "[concepts]")
