@@ -92,6 +92,8 @@ struct Arguments {
     double contacts = 1.5;
     std::size_t all_pairs_steps = 2;
     double side = 0.0; // > 0: fixed cube side instead of the calibration
+    int box_depth = PCCD::World_options{}.box_depth;
+    double fat_margin = PCCD::Dynamic_AABB_tree_options{}.fat_margin;
     std::uint64_t seed = 1;
     std::string csv;
 };
@@ -127,6 +129,8 @@ Arguments parse(int argc, char** argv)
         else if (key == "--contacts") a.contacts = std::stod(value);
         else if (key == "--all-pairs-steps") a.all_pairs_steps = std::stoul(value);
         else if (key == "--side") a.side = std::stod(value);
+        else if (key == "--box-depth") a.box_depth = std::stoi(value);
+        else if (key == "--fat-margin") a.fat_margin = std::stod(value);
         else if (key == "--seed") a.seed = std::stoull(value);
         else if (key == "--csv") a.csv = value;
         else throw std::invalid_argument("unknown option " + key);
@@ -376,6 +380,63 @@ double calibrate_side(const std::vector<Shape>& shapes, const std::vector<Instan
     return best;
 }
 
+/// Where a step's time goes, on the world's last poses: the broad-phase walk, and the narrow phase
+/// of every candidate pair (tight world boxes overlap) timed one by one, separate and intersecting
+/// pairs apart, twice in a row (the second pass finds the objects' data in the caches); and how many
+/// pairs the world boxes of each hierarchy depth let through.
+void profile_narrow_phase(const World& world, const std::vector<PCCD::World_handle>& handles, const Arguments& args)
+{
+    std::vector<double> walk_us;
+    std::size_t fat_pairs = 0;
+    for (int r = 0; r < 5; ++r) {
+        fat_pairs = 0;
+        const auto start = PCCD::testing::Clock::now();
+        world.broad_phase().for_each_overlapping_pair([&](std::uint32_t, std::uint32_t) { ++fat_pairs; });
+        walk_us.push_back(PCCD::testing::us_since(start));
+    }
+    std::vector<Pair> candidates;
+    world.broad_phase().for_each_overlapping_pair([&](std::uint32_t i, std::uint32_t j) {
+        if (world.box(handles[i]).intersects(world.box(handles[j]))) candidates.emplace_back(std::min(i, j), std::max(i, j));
+    });
+    std::sort(candidates.begin(), candidates.end());
+    for (int pass = 0; pass < 2; ++pass) {
+        std::array<double, 2> us{0, 0}, node_pairs{0, 0}, f{0, 0};
+        std::array<std::size_t, 2> count{0, 0};
+        for (const auto& [i, j] : candidates) {
+            PCCD::Intersection_options o = world.options().intersection;
+            o.seed = PCCD::pair_seed(o.seed, PCCD::world_pair_key(i, j));
+            const auto start = PCCD::testing::Clock::now();
+            const PCCD::Intersection_result r = PCCD::do_intersect(world.object(handles[i]), world.pose(handles[i]),
+                                                                   world.object(handles[j]), world.pose(handles[j]), o);
+            const double t = PCCD::testing::us_since(start);
+            const int k = r.status == PCCD::Intersection_status::separate ? 0 : 1;
+            us[k] += t;
+            node_pairs[k] += double(r.counters.node_pairs);
+            f[k] += double(r.counters.f_evaluations);
+            ++count[k];
+        }
+        std::printf("profile pass %d: walk of the tree %.3f ms (%zu fat pairs), %zu candidates: %zu separate, mean %.1f us, "
+                    "%.0f node pairs, %.1f f; %zu intersecting, mean %.1f us, %.0f node pairs, %.1f f; total %.2f ms\n",
+                    pass + 1, PCCD::testing::median(walk_us) * 1e-3, fat_pairs, candidates.size(), count[0],
+                    us[0] / double(std::max<std::size_t>(count[0], 1)), node_pairs[0] / double(std::max<std::size_t>(count[0], 1)),
+                    f[0] / double(std::max<std::size_t>(count[0], 1)), count[1],
+                    us[1] / double(std::max<std::size_t>(count[1], 1)), node_pairs[1] / double(std::max<std::size_t>(count[1], 1)),
+                    f[1] / double(std::max<std::size_t>(count[1], 1)), (us[0] + us[1]) * 1e-3);
+    }
+    // The pairs the world boxes of each depth let through (brute force over all pairs).
+    std::printf("profile: pairs whose world boxes overlap, by world_box depth:");
+    for (const int depth : {0, 1, 2, 3, 4, 5, 6, 8, 32}) {
+        std::vector<Eigen::AlignedBox3d> boxes;
+        for (const auto& h : handles) boxes.push_back(PCCD::world_box(world.object(h), world.pose(h), depth));
+        std::size_t overlapping = 0;
+        for (std::size_t i = 0; i < boxes.size(); ++i)
+            for (std::size_t j = i + 1; j < boxes.size(); ++j) overlapping += boxes[i].intersects(boxes[j]) ? 1 : 0;
+        std::printf(" %d: %zu", depth, overlapping);
+    }
+    std::printf("\n");
+    static_cast<void>(args);
+}
+
 void run_scene(std::size_t n, const std::vector<Shape>& shapes, const Arguments& args, std::ofstream* csv)
 {
     const std::vector<Instance> unit = random_instances(n, shapes.size(), args.seed * 1000003 + n);
@@ -401,6 +462,8 @@ void run_scene(std::size_t n, const std::vector<Shape>& shapes, const Arguments&
         options.intersection.seed = args.seed;
         options.threads = m.threads;
         options.cache_results = m.cache;
+        options.box_depth = args.box_depth;
+        options.tree.fat_margin = args.fat_margin;
         const auto start = PCCD::testing::Clock::now();
         auto world = std::make_unique<World>(options);
         std::vector<PCCD::World_handle> h;
@@ -633,6 +696,7 @@ void run_scene(std::size_t n, const std::vector<Shape>& shapes, const Arguments&
                     PCCD::testing::median(sym), *std::max_element(sym.begin(), sym.end()), total_op, total_of, total_p,
                     total_f, world_mismatches);
     }
+    profile_narrow_phase(*worlds[0], handles[0], args);
     const auto stats_tree = worlds[0]->broad_phase().statistics();
     std::printf("broad phase (t1 cache): height %zu, reinsertions %zu, rebuilds %zu; load average %s\n", stats_tree.height,
                 stats_tree.reinsertions, stats_tree.rebuilds, load_average().c_str());
