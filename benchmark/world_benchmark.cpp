@@ -7,7 +7,8 @@
 //   world_benchmark [--models bunny00.off,elephant.off,armadillo.off,ChineseDragon-10kv.off]
 //                   [--scales 0.5,1,2] [--points 30000] [--objects 100,1000] [--steps 20]
 //                   [--moved 0.1] [--translation 0.2] [--rotation 10] [--contacts 1.5]
-//                   [--all-pairs-steps 2] [--seed 1] [--csv OUT]
+//                   [--all-pairs-steps 2] [--seed 1] [--side L] [--box-depth 6] [--fat-margin 0.05]
+//                   [--csv OUT]
 //
 // Shapes: every model of --models, normalized into [-1, 1]^3 (size 2) and sampled by area with
 // --points points (seed --seed), at every scale of --scales: one separately preprocessed shared
@@ -20,7 +21,8 @@
 // moves round(--moved n) distinct random instances by --translation times their size (2 x scale) in
 // a random direction (mirrored back into the cube) and turns them by a random angle of at most
 // --rotation degrees about a random axis, then asks for all intersecting pairs. Every method sees
-// the same motions; the order of the methods rotates from step to step. Methods:
+// the same motions; the order of the methods rotates from step to step (the all-pairs loop runs
+// after them). Methods:
 //   fcl          FCL's DynamicAABBTreeCollisionManager<double> over one CollisionObject per instance
 //                (sharing the BVHModel of its shape): setTransform + computeAABB of the moved ones,
 //                update(moved), collide(callback) where the callback runs fcl::collide with
@@ -28,11 +30,17 @@
 //   pccd t1 / t2 Collision_world (World_options::threads 1 or 2) with the result cache on (default)
 //                or off: set_poses(moved) then intersecting_pairs();
 //   all-pairs    PCCD::do_intersect on every pair of instances with the world's pair seed, one
-//                thread, no broad phase: on the first --all-pairs-steps moved steps only (slow).
+//                thread, no broad phase: on the first --all-pairs-steps moved steps only (slow);
+//                its pairs must equal the world's (counted).
 // Times: wall time of the whole step (update and query), and CPU time: the thread's for the
 // single-threaded methods, the process's (all threads) for t2. Printed per scene: the cold step, the
-// median / mean / p90 over the moved steps, ratios to FCL, the counters, memory per instance, and
-// the agreement of PCCD's pairs with FCL's per step.
+// median / mean / p90 over the moved steps, ratios to FCL, the world's counters (fat-box pairs,
+// pairs dropped by the tight boxes, cached answers, narrow-phase queries, pairs reported), memory
+// per instance (memory_bytes() / size(), shared objects not counted), the agreement of PCCD's pairs
+// with FCL's per step, and a profile on the last poses: the broad phases and the narrow phases of
+// both, separate and touching pairs apart (thread CPU time), and the pairs the world boxes of each
+// hierarchy depth let through. --box-depth and --fat-margin set World_options::box_depth and
+// tree.fat_margin (defaults: the library's).
 #include "collision_baselines.h"
 
 #include <PCCD/testing/csv.h>
@@ -235,7 +243,6 @@ struct Fcl_scene {
         fcl::CollisionRequestd request;
         std::vector<Pair> pairs;
         std::size_t candidates = 0;
-        double narrow_us = 0.0; // wall time inside fcl::collide
     };
 
     Fcl_scene(const std::vector<Shape>& shapes, const std::vector<Instance>& instances)
@@ -250,19 +257,20 @@ struct Fcl_scene {
         manager.setup();
     }
 
+    static Pair pair_of(const fcl::CollisionObjectd* o1, const fcl::CollisionObjectd* o2)
+    {
+        const auto a = std::uint32_t(reinterpret_cast<std::uintptr_t>(o1->getUserData()));
+        const auto b = std::uint32_t(reinterpret_cast<std::uintptr_t>(o2->getUserData()));
+        return {std::min(a, b), std::max(a, b)};
+    }
+
     static bool callback(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* cdata)
     {
         Data& data = *static_cast<Data*>(cdata);
         ++data.candidates;
         fcl::CollisionResultd result;
-        const auto start = std::chrono::steady_clock::now();
         fcl::collide(o1, o2, data.request, result);
-        data.narrow_us += std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
-        if (result.isCollision()) {
-            const auto a = std::uint32_t(reinterpret_cast<std::uintptr_t>(o1->getUserData()));
-            const auto b = std::uint32_t(reinterpret_cast<std::uintptr_t>(o2->getUserData()));
-            data.pairs.emplace_back(std::min(a, b), std::max(a, b));
-        }
+        if (result.isCollision()) data.pairs.push_back(pair_of(o1, o2));
         return false; // never stop: all pairs
     }
 
@@ -306,7 +314,7 @@ struct Method {
 
 /// What one method did on one step.
 struct Record {
-    double wall_ms = 0, cpu_ms = 0, update_ms = 0, narrow_ms = std::nan("");
+    double wall_ms = 0, cpu_ms = 0, update_ms = std::nan("");
     std::size_t pairs = 0, broad_pairs = 0, filtered = 0, cached = 0, narrow_queries = 0;
 };
 
@@ -380,49 +388,101 @@ double calibrate_side(const std::vector<Shape>& shapes, const std::vector<Instan
     return best;
 }
 
-/// Where a step's time goes, on the world's last poses: the broad-phase walk, and the narrow phase
-/// of every candidate pair (tight world boxes overlap) timed one by one, separate and intersecting
-/// pairs apart, twice in a row (the second pass finds the objects' data in the caches); and how many
-/// pairs the world boxes of each hierarchy depth let through.
-void profile_narrow_phase(const World& world, const std::vector<PCCD::World_handle>& handles, const Arguments& args)
+/// The thread CPU time of `f()` in us, the median of `repetitions` runs.
+template <class F>
+double cpu_us(F&& f, int repetitions = 3)
 {
-    std::vector<double> walk_us;
-    std::size_t fat_pairs = 0;
-    for (int r = 0; r < 5; ++r) {
-        fat_pairs = 0;
-        const auto start = PCCD::testing::Clock::now();
-        world.broad_phase().for_each_overlapping_pair([&](std::uint32_t, std::uint32_t) { ++fat_pairs; });
-        walk_us.push_back(PCCD::testing::us_since(start));
+    std::vector<double> times;
+    for (int r = 0; r < repetitions; ++r) {
+        const double t0 = PCCD::testing::thread_cpu_us();
+        f();
+        times.push_back(PCCD::testing::thread_cpu_us() - t0);
     }
+    return PCCD::testing::median(times);
+}
+
+/// Where a step's time goes, on the last poses (thread CPU time, one thread, each group timed as a
+/// whole, median of 3 runs): PCCD's broad-phase walk and the narrow phase of its candidate pairs
+/// (tight world boxes overlap), separate and intersecting apart; FCL's broad phase (collide() with a
+/// callback that does nothing) and fcl::collide on its candidate pairs, colliding and not apart; and
+/// how many pairs the world boxes of each hierarchy depth let through.
+void profile(const World& world, const std::vector<PCCD::World_handle>& handles, Fcl_scene& fcl_scene)
+{
+    std::size_t fat_pairs = 0;
+    const double walk = cpu_us([&] {
+        fat_pairs = 0;
+        world.broad_phase().for_each_overlapping_pair([&](std::uint32_t, std::uint32_t) { ++fat_pairs; });
+    });
     std::vector<Pair> candidates;
     world.broad_phase().for_each_overlapping_pair([&](std::uint32_t i, std::uint32_t j) {
         if (world.box(handles[i]).intersects(world.box(handles[j]))) candidates.emplace_back(std::min(i, j), std::max(i, j));
     });
     std::sort(candidates.begin(), candidates.end());
-    for (int pass = 0; pass < 2; ++pass) {
-        std::array<double, 2> us{0, 0}, node_pairs{0, 0}, f{0, 0};
-        std::array<std::size_t, 2> count{0, 0};
-        for (const auto& [i, j] : candidates) {
-            PCCD::Intersection_options o = world.options().intersection;
-            o.seed = PCCD::pair_seed(o.seed, PCCD::world_pair_key(i, j));
-            const auto start = PCCD::testing::Clock::now();
-            const PCCD::Intersection_result r = PCCD::do_intersect(world.object(handles[i]), world.pose(handles[i]),
-                                                                   world.object(handles[j]), world.pose(handles[j]), o);
-            const double t = PCCD::testing::us_since(start);
-            const int k = r.status == PCCD::Intersection_status::separate ? 0 : 1;
-            us[k] += t;
-            node_pairs[k] += double(r.counters.node_pairs);
-            f[k] += double(r.counters.f_evaluations);
-            ++count[k];
-        }
-        std::printf("profile pass %d: walk of the tree %.3f ms (%zu fat pairs), %zu candidates: %zu separate, mean %.1f us, "
-                    "%.0f node pairs, %.1f f; %zu intersecting, mean %.1f us, %.0f node pairs, %.1f f; total %.2f ms\n",
-                    pass + 1, PCCD::testing::median(walk_us) * 1e-3, fat_pairs, candidates.size(), count[0],
-                    us[0] / double(std::max<std::size_t>(count[0], 1)), node_pairs[0] / double(std::max<std::size_t>(count[0], 1)),
-                    f[0] / double(std::max<std::size_t>(count[0], 1)), count[1],
-                    us[1] / double(std::max<std::size_t>(count[1], 1)), node_pairs[1] / double(std::max<std::size_t>(count[1], 1)),
-                    f[1] / double(std::max<std::size_t>(count[1], 1)), (us[0] + us[1]) * 1e-3);
+    const auto query = [&](const Pair& p) {
+        PCCD::Intersection_options o = world.options().intersection;
+        o.seed = PCCD::pair_seed(o.seed, PCCD::world_pair_key(p.first, p.second));
+        return PCCD::do_intersect(world.object(handles[p.first]), world.pose(handles[p.first]),
+                                  world.object(handles[p.second]), world.pose(handles[p.second]), o);
+    };
+    std::array<std::vector<Pair>, 2> groups; // separate, intersecting
+    std::array<double, 2> node_pairs{0, 0}, f{0, 0};
+    for (const Pair& p : candidates) {
+        const PCCD::Intersection_result r = query(p);
+        const int k = r.status == PCCD::Intersection_status::separate ? 0 : 1;
+        groups[k].push_back(p);
+        node_pairs[k] += double(r.counters.node_pairs);
+        f[k] += double(r.counters.f_evaluations);
     }
+    std::array<double, 2> us{0, 0};
+    for (int k = 0; k < 2; ++k)
+        us[k] = cpu_us([&] {
+            for (const Pair& p : groups[k]) static_cast<void>(query(p));
+        });
+    const auto per = [](double x, std::size_t n) { return n ? x / double(n) : std::nan(""); };
+    std::printf("profile PCCD: tree walk %.3f ms (%zu fat pairs); %zu candidates: %zu separate %.1f us each (%.0f node "
+                "pairs, %.1f f), %zu intersecting %.1f us each (%.0f node pairs, %.1f f); narrow phase of all %.2f ms\n",
+                walk * 1e-3, fat_pairs, candidates.size(), groups[0].size(), per(us[0], groups[0].size()),
+                per(node_pairs[0], groups[0].size()), per(f[0], groups[0].size()), groups[1].size(),
+                per(us[1], groups[1].size()), per(node_pairs[1], groups[1].size()), per(f[1], groups[1].size()),
+                (us[0] + us[1]) * 1e-3);
+
+    // FCL: its candidates and verdicts, then each part timed alone.
+    struct Collect {
+        std::vector<std::pair<fcl::CollisionObjectd*, fcl::CollisionObjectd*>> objects;
+    } collect;
+    fcl_scene.manager.collide(&collect, [](fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* cdata) {
+        static_cast<Collect*>(cdata)->objects.emplace_back(o1, o2);
+        return false;
+    });
+    fcl::CollisionRequestd request;
+    request.num_max_contacts = 1;
+    request.enable_contact = false;
+    std::array<std::vector<std::pair<fcl::CollisionObjectd*, fcl::CollisionObjectd*>>, 2> fcl_groups;
+    for (const auto& [o1, o2] : collect.objects) {
+        fcl::CollisionResultd result;
+        fcl::collide(o1, o2, request, result);
+        fcl_groups[result.isCollision() ? 1 : 0].emplace_back(o1, o2);
+    }
+    std::size_t count = 0;
+    const double fcl_walk = cpu_us([&] {
+        fcl_scene.manager.collide(&count, [](fcl::CollisionObjectd*, fcl::CollisionObjectd*, void* c) {
+            ++*static_cast<std::size_t*>(c);
+            return false;
+        });
+    });
+    std::array<double, 2> fcl_us{0, 0};
+    for (int k = 0; k < 2; ++k)
+        fcl_us[k] = cpu_us([&] {
+            for (const auto& [o1, o2] : fcl_groups[k]) {
+                fcl::CollisionResultd result;
+                fcl::collide(o1, o2, request, result);
+            }
+        });
+    std::printf("profile FCL: broad phase %.3f ms (%zu candidates): %zu not colliding %.1f us each, %zu colliding %.1f us "
+                "each; narrow phase of all %.2f ms\n",
+                fcl_walk * 1e-3, collect.objects.size(), fcl_groups[0].size(), per(fcl_us[0], fcl_groups[0].size()),
+                fcl_groups[1].size(), per(fcl_us[1], fcl_groups[1].size()), (fcl_us[0] + fcl_us[1]) * 1e-3);
+
     // The pairs the world boxes of each depth let through (brute force over all pairs).
     std::printf("profile: pairs whose world boxes overlap, by world_box depth:");
     for (const int depth : {0, 1, 2, 3, 4, 5, 6, 8, 32}) {
@@ -434,7 +494,6 @@ void profile_narrow_phase(const World& world, const std::vector<PCCD::World_hand
         std::printf(" %d: %zu", depth, overlapping);
     }
     std::printf("\n");
-    static_cast<void>(args);
 }
 
 void run_scene(std::size_t n, const std::vector<Shape>& shapes, const Arguments& args, std::ofstream* csv)
@@ -567,7 +626,6 @@ void run_scene(std::size_t n, const std::vector<Shape>& shapes, const Arguments&
                 Fcl_scene::Data data = fcl_scene.step(instances, moved);
                 rec.wall_ms = PCCD::testing::ms_since(wall0);
                 rec.cpu_ms = (PCCD::testing::thread_cpu_us() - cpu0) * 1e-3;
-                rec.narrow_ms = data.narrow_us * 1e-3;
                 rec.broad_pairs = data.candidates;
                 rec.narrow_queries = data.candidates;
                 rec.pairs = data.pairs.size();
@@ -606,14 +664,14 @@ void run_scene(std::size_t n, const std::vector<Shape>& shapes, const Arguments&
             if (found != answers[0]) ++all_pairs_mismatches;
             all_pairs_records.push_back(rec);
             if (csv)
-                *csv << n << ',' << step << ",all-pairs," << rec.wall_ms << ',' << rec.cpu_ms << ",,," << rec.pairs
+                *csv << n << ',' << step << ",all-pairs," << rec.wall_ms << ',' << rec.cpu_ms << ",," << rec.pairs
                      << ",,,," << rec.narrow_queries << '\n';
         }
         if (csv)
             for (std::size_t m = 0; m < methods.size(); ++m) {
                 const Record& r = records[m][step];
                 *csv << n << ',' << step << ',' << methods[m].name << ',' << r.wall_ms << ',' << r.cpu_ms << ','
-                     << r.update_ms << ',' << r.narrow_ms << ',' << r.pairs << ',' << r.broad_pairs << ',' << r.filtered
+                     << r.update_ms << ',' << r.pairs << ',' << r.broad_pairs << ',' << r.filtered
                      << ',' << r.cached << ',' << r.narrow_queries << '\n';
             }
     }
@@ -631,13 +689,13 @@ void run_scene(std::size_t n, const std::vector<Shape>& shapes, const Arguments&
     };
     const Stats fcl_wall = column(fcl_method, &Record::wall_ms);
     const Stats fcl_cpu = column(fcl_method, &Record::cpu_ms);
-    std::printf("%-18s %9s %9s | %9s %9s %9s %9s | %8s %8s | %8s %8s %8s %8s %8s | %9s\n", "method", "build ms",
-                "cold ms", "wall med", "wall mean", "wall p90", "cpu med", "wall/FCL", "cpu/FCL", "broad", "filtered",
-                "cached", "narrow", "pairs", "B/inst");
+    std::printf("%-18s %9s %9s %9s | %9s %9s %9s %9s | %8s %8s | %8s %8s %8s %8s %8s | %9s\n", "method", "build ms",
+                "cold wall", "cold cpu", "wall med", "wall mean", "wall p90", "cpu med", "wall/FCL", "cpu/FCL", "broad",
+                "filtered", "cached", "narrow", "pairs", "B/inst");
     for (std::size_t m = 0; m < methods.size(); ++m) {
         const Stats wall = column(m, &Record::wall_ms), cpu = column(m, &Record::cpu_ms);
-        std::printf("%-18s %9.1f %9.1f | %9.2f %9.2f %9.2f %9.2f | %8.3f %8.3f | %8.0f %8.0f %8.0f %8.0f %8.0f | %9.0f\n",
-                    methods[m].name.c_str(), build_ms[m], records[m][0].wall_ms, wall.median, wall.mean, wall.p90,
+        std::printf("%-18s %9.1f %9.1f %9.1f | %9.2f %9.2f %9.2f %9.2f | %8.3f %8.3f | %8.0f %8.0f %8.0f %8.0f %8.0f | %9.0f\n",
+                    methods[m].name.c_str(), build_ms[m], records[m][0].wall_ms, records[m][0].cpu_ms, wall.median, wall.mean, wall.p90,
                     cpu.median, wall.median / fcl_wall.median, cpu.median / fcl_cpu.median,
                     count_column(m, &Record::broad_pairs).median, count_column(m, &Record::filtered).median,
                     count_column(m, &Record::cached).median, count_column(m, &Record::narrow_queries).median,
@@ -651,8 +709,8 @@ void run_scene(std::size_t n, const std::vector<Shape>& shapes, const Arguments&
             cpu.push_back(r.cpu_ms);
         }
         const Stats w = stats(wall), c = stats(cpu);
-        std::printf("%-18s %9s %9s | %9.2f %9.2f %9.2f %9.2f | %8.3f %8.3f | %8s %8s %8s %8zu %8zu | (%zu steps)\n",
-                    "all-pairs t1", "-", "-", w.median, w.mean, w.p90, c.median, w.median / fcl_wall.median,
+        std::printf("%-18s %9s %9s %9s | %9.2f %9.2f %9.2f %9.2f | %8.3f %8.3f | %8s %8s %8s %8zu %8zu | (%zu steps)\n",
+                    "all-pairs t1", "-", "-", "-", w.median, w.mean, w.p90, c.median, w.median / fcl_wall.median,
                     c.median / fcl_cpu.median, "-", "-", "-", all_pairs_records.front().narrow_queries,
                     all_pairs_records.front().pairs, all_pairs_records.size());
         const Stats t1 = column(0, &Record::cpu_ms), t1_nocache = column(2, &Record::cpu_ms);
@@ -663,11 +721,9 @@ void run_scene(std::size_t n, const std::vector<Shape>& shapes, const Arguments&
     // Where the time goes (medians over the moved steps).
     {
         const Stats up1 = column(0, &Record::update_ms), up3 = column(2, &Record::update_ms);
-        const Stats fn = column(fcl_method, &Record::narrow_ms);
-        std::printf("profile: pccd t1 cache set_poses %.3f ms of %.2f; pccd t1 nocache set_poses %.3f ms of %.2f; "
-                    "fcl narrow phase (fcl::collide calls, wall) %.2f ms of %.2f\n",
-                    up1.median, column(0, &Record::wall_ms).median, up3.median, column(2, &Record::wall_ms).median,
-                    fn.median, fcl_wall.median);
+        std::printf("profile: set_poses of the moved instances %.3f ms of %.2f (t1 cache), %.3f ms of %.2f (t1 nocache), "
+                    "wall medians\n",
+                    up1.median, column(0, &Record::wall_ms).median, up3.median, column(2, &Record::wall_ms).median);
     }
     // Agreement with FCL.
     {
@@ -696,7 +752,7 @@ void run_scene(std::size_t n, const std::vector<Shape>& shapes, const Arguments&
                     PCCD::testing::median(sym), *std::max_element(sym.begin(), sym.end()), total_op, total_of, total_p,
                     total_f, world_mismatches);
     }
-    profile_narrow_phase(*worlds[0], handles[0], args);
+    profile(*worlds[0], handles[0], fcl_scene);
     const auto stats_tree = worlds[0]->broad_phase().statistics();
     std::printf("broad phase (t1 cache): height %zu, reinsertions %zu, rebuilds %zu; load average %s\n", stats_tree.height,
                 stats_tree.reinsertions, stats_tree.rebuilds, load_average().c_str());
@@ -719,7 +775,7 @@ int main(int argc, char** argv)
         std::ofstream csv;
         if (!args.csv.empty()) {
             csv = PCCD::testing::open_csv(args.csv);
-            csv << "objects,step,method,wall_ms,cpu_ms,update_ms,narrow_ms,pairs,broad_pairs,filtered,cached,"
+            csv << "objects,step,method,wall_ms,cpu_ms,update_ms,pairs,broad_pairs,filtered,cached,"
                    "narrow_queries\n";
         }
         for (const std::size_t n : args.objects) run_scene(n, shapes, args, args.csv.empty() ? nullptr : &csv);
