@@ -483,16 +483,42 @@ void profile(const World& world, const std::vector<PCCD::World_handle>& handles,
                 fcl_walk * 1e-3, collect.objects.size(), fcl_groups[0].size(), per(fcl_us[0], fcl_groups[0].size()),
                 fcl_groups[1].size(), per(fcl_us[1], fcl_groups[1].size()), (fcl_us[0] + fcl_us[1]) * 1e-3);
 
-    // The pairs the world boxes of each depth let through (brute force over all pairs).
-    std::printf("profile: pairs whose world boxes overlap, by world_box depth:");
-    for (const int depth : {0, 1, 2, 3, 4, 5, 6, 8, 32}) {
+    // The pairs the world boxes of each depth let through (brute force over all pairs), the CPU time
+    // of one world box at that depth, and of do_intersect on all those pairs: the depths timed in
+    // turn, three rounds, medians.
+    const std::vector<int> depths{0, 3, 4, 5, 6, 8, 32};
+    std::vector<std::vector<Pair>> depth_pairs;
+    std::vector<std::vector<double>> box_us(depths.size()), narrow_us(depths.size());
+    for (const int depth : depths) {
         std::vector<Eigen::AlignedBox3d> boxes;
         for (const auto& h : handles) boxes.push_back(PCCD::world_box(world.object(h), world.pose(h), depth));
-        std::size_t overlapping = 0;
-        for (std::size_t i = 0; i < boxes.size(); ++i)
-            for (std::size_t j = i + 1; j < boxes.size(); ++j) overlapping += boxes[i].intersects(boxes[j]) ? 1 : 0;
-        std::printf(" %d: %zu", depth, overlapping);
+        std::vector<Pair> pairs;
+        for (std::uint32_t i = 0; i < boxes.size(); ++i)
+            for (std::uint32_t j = i + 1; j < boxes.size(); ++j)
+                if (boxes[i].intersects(boxes[j])) pairs.emplace_back(i, j);
+        depth_pairs.push_back(std::move(pairs));
     }
+    for (int round = 0; round < 3; ++round)
+        for (std::size_t d = 0; d < depths.size(); ++d) {
+            Eigen::AlignedBox3d sink;
+            box_us[d].push_back(cpu_us(
+                                    [&] {
+                                        for (const auto& h : handles)
+                                            sink.extend(PCCD::world_box(world.object(h), world.pose(h), depths[d]));
+                                    },
+                                    1) /
+                                double(handles.size()));
+            if (sink.isEmpty()) std::printf("(empty)\n");
+            narrow_us[d].push_back(cpu_us(
+                [&] {
+                    for (const Pair& p : depth_pairs[d]) static_cast<void>(query(p));
+                },
+                1));
+        }
+    std::printf("profile: world_box depth: pairs whose boxes overlap, us per box, do_intersect on those pairs ms:");
+    for (std::size_t d = 0; d < depths.size(); ++d)
+        std::printf(" %d: %zu, %.2f, %.2f;", depths[d], depth_pairs[d].size(), PCCD::testing::median(box_us[d]),
+                    PCCD::testing::median(narrow_us[d]) * 1e-3);
     std::printf("\n");
 }
 
@@ -553,7 +579,7 @@ void run_scene(std::size_t n, const std::vector<Shape>& shapes, const Arguments&
     // records[method][step]
     std::vector<std::vector<Record>> records(methods.size(), std::vector<Record>(args.steps + 1));
     std::vector<Record> all_pairs_records;
-    std::vector<std::size_t> pccd_pairs(args.steps + 1), fcl_pairs(args.steps + 1), only_pccd(args.steps + 1),
+    std::vector<std::size_t> moved_pairs(args.steps + 1), pccd_pairs(args.steps + 1), fcl_pairs(args.steps + 1), only_pccd(args.steps + 1),
         only_fcl(args.steps + 1);
     std::size_t world_mismatches = 0, all_pairs_mismatches = 0;
     std::vector<std::size_t> memory_bytes(worlds.size(), 0);
@@ -635,6 +661,10 @@ void run_scene(std::size_t n, const std::vector<Shape>& shapes, const Arguments&
         for (std::size_t m = 1; m < fcl_method; ++m)
             if (answers[m] != answers[0]) ++world_mismatches;
         pccd_pairs[step] = answers[0].size();
+        moved_pairs[step] = std::size_t(std::count_if(answers[0].begin(), answers[0].end(), [&](const Pair& p) {
+            return std::binary_search(moved.begin(), moved.end(), p.first) ||
+                   std::binary_search(moved.begin(), moved.end(), p.second);
+        }));
         fcl_pairs[step] = answers[fcl_method].size();
         only_pccd[step] = difference_count(answers[0], answers[fcl_method]);
         only_fcl[step] = difference_count(answers[fcl_method], answers[0]);
@@ -727,7 +757,8 @@ void run_scene(std::size_t n, const std::vector<Shape>& shapes, const Arguments&
     }
     // Agreement with FCL.
     {
-        std::vector<double> p, f, op, of, sym;
+        std::vector<double> p, f, op, of, sym, mp;
+        for (std::size_t s = 1; s <= args.steps; ++s) mp.push_back(double(moved_pairs[s]));
         for (std::size_t s = 0; s <= args.steps; ++s) {
             p.push_back(double(pccd_pairs[s]));
             f.push_back(double(fcl_pairs[s]));
@@ -745,12 +776,12 @@ void run_scene(std::size_t n, const std::vector<Shape>& shapes, const Arguments&
         std::printf("pairs per step (all %zu steps): PCCD median %.0f (min %.0f, max %.0f), FCL median %.0f (min %.0f, "
                     "max %.0f); contacts per object (PCCD) %.2f; symmetric difference per step median %.0f, max %.0f "
                     "(PCCD only %zu, FCL only %zu of %zu / %zu pairs in total); PCCD worlds disagreeing with each "
-                    "other on %zu step-answers\n",
+                    "other on %zu step-answers; intersecting pairs with a moved instance per moved step: median %.0f\n",
                     args.steps + 1, PCCD::testing::median(p), *std::min_element(p.begin(), p.end()),
                     *std::max_element(p.begin(), p.end()), PCCD::testing::median(f), *std::min_element(f.begin(), f.end()),
                     *std::max_element(f.begin(), f.end()), 2.0 * PCCD::testing::median(p) / double(n),
                     PCCD::testing::median(sym), *std::max_element(sym.begin(), sym.end()), total_op, total_of, total_p,
-                    total_f, world_mismatches);
+                    total_f, world_mismatches, PCCD::testing::median(mp));
     }
     profile(*worlds[0], handles[0], fcl_scene);
     const auto stats_tree = worlds[0]->broad_phase().statistics();
