@@ -33,8 +33,8 @@ struct World_options {
     /// boxes fit rotated objects tighter, so fewer pairs reach the narrow phase, and cost O(2^depth)
     /// per insertion or pose change. Default 6 (64 nodes: on scenes of scanned models 27 % fewer
     /// candidate pairs and cached answers than depth 3, for under 1 us more per pose change; the
-    /// narrow phase gains only about 2 %, as do_intersect rejects most of the dropped pairs at its
-    /// first test; doc/benchmarks.md, "Collision worlds").
+    /// narrow phase gains little, as do_intersect rejects the dropped pairs at its first test;
+    /// doc/benchmarks.md, "Collision worlds").
     int box_depth = 6;
 };
 
