@@ -400,3 +400,15 @@ def test_bad_arguments_raise_clear_errors(objects):
         pccd.World(threads=0)
     with pytest.raises(ValueError, match="traversal"):
         pccd.World(traversal="sideways")
+
+
+def test_the_example_runs_and_checks_its_pairs(source_dir):
+    import os
+    import subprocess
+    done = subprocess.run([sys.executable, str(source_dir / "examples" / "python" / "world.py"), "--instances", "30",
+                           "--steps", "3"], capture_output=True, text=True, timeout=600, env=dict(os.environ))
+    assert done.returncode == 0, done.stdout + done.stderr
+    lines = done.stdout.splitlines()
+    assert lines[0].startswith("step 0: ") and "0 answers from the cache" in lines[0]
+    assert "each equal to do_intersect with its pair seed" in lines[-2]
+    assert lines[-1] == "Collision_world::set_pose: handle 0 (generation 0) is stale: that instance was erased"
