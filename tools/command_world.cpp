@@ -18,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -53,11 +54,14 @@ struct World_command_options {
     std::string view = "30,25";
 };
 
-/// One row of the scene: the file, its pose and its collision filter.
+/// One row of the scene: the file, its pose and its collision filter; for a generated row also the
+/// 12 numbers the pose was built from (what --write-scene writes: read back, they give the same
+/// pose bit for bit, as Rigid_transform_3 stores the nearest rotation to the matrix given).
 struct Scene_row {
     std::string file;
     PCCD::Rigid_transform_3<double> pose;
     PCCD::Collision_filter filter;
+    std::array<double, 12> given{};
 };
 
 std::uint32_t filter_field(const std::string& field, const std::string& where, const char* name)
@@ -119,14 +123,10 @@ std::pair<std::string, std::size_t> generate_spec(const std::string& spec)
     return {spec.substr(0, colon), std::size_t(*count)};
 }
 
-std::string pose_text(const PCCD::Rigid_transform_3<double>& pose)
+std::string pose_text(const std::array<double, 12>& m)
 {
     std::string text;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 4; ++j) {
-            const double v = j < 3 ? pose.rotation()(i, j) : pose.translation()(i);
-            text += "," + PCCD::Rigid_transform_3<double>::full_digits(v);
-        }
+    for (const double v : m) text += "," + PCCD::Rigid_transform_3<double>::full_digits(v);
     return text;
 }
 
@@ -168,10 +168,12 @@ void run_world(const World_command_options& o)
     };
     for (const Scene_row& row : rows) add_file(row.file);
     for (const auto& [file, count] : specs) add_file(file);
+    std::vector<Object_points> points; // every file read before any is preprocessed
+    for (const std::string& file : files) points.push_back(read_object_points(file, o.normalize));
     std::vector<std::shared_ptr<const PCCD::Point_cloud_object<>>> objects;
     std::vector<double> preprocess_ms;
-    for (const std::string& file : files) {
-        Prepared_object prepared = prepare_object(read_object_points(file, o.normalize), file);
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        Prepared_object prepared = prepare_object(points[i], files[i]);
         objects.push_back(std::make_shared<const PCCD::Point_cloud_object<>>(std::move(prepared.object)));
         preprocess_ms.push_back(prepared.preprocess_ms);
     }
@@ -193,14 +195,17 @@ void run_world(const World_command_options& o)
                 const Eigen::Matrix3d r = PCCD::testing::uniform_random_rotation(engine);
                 const Eigen::Vector3d t(PCCD::uniform_real(engine, 0, side), PCCD::uniform_real(engine, 0, side),
                                         PCCD::uniform_real(engine, 0, side));
-                rows.push_back({file, PCCD::Rigid_transform_3<double>(r, t), {}});
+                std::array<double, 12> m;
+                for (int row = 0; row < 3; ++row)
+                    for (int col = 0; col < 4; ++col) m[std::size_t(4 * row + col)] = col < 3 ? r(row, col) : t(row);
+                rows.push_back({file, PCCD::Rigid_transform_3<double>(m), {}, m});
             }
         if (!o.write_scene.empty()) {
             std::ofstream out(o.write_scene);
             if (!out) throw PCCD::File_error(o.write_scene, "cannot write the scene file");
             out << "# pccd world --generate, scene seed " << o.scene_seed << ", side "
                 << PCCD::Rigid_transform_3<double>::full_digits(side) << "\nfile,r00,r01,r02,t0,r10,r11,r12,t1,r20,r21,r22,t2\n";
-            for (const Scene_row& row : rows) out << row.file << pose_text(row.pose) << '\n';
+            for (const Scene_row& row : rows) out << row.file << pose_text(row.given) << '\n';
             if (!out) throw PCCD::File_error(o.write_scene, "cannot write the scene file");
         }
     }
