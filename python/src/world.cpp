@@ -488,12 +488,20 @@ ValueError
             py::arg("a"), py::arg("b"), "bool: whether the pair (a, b) was excluded.")
         .def(
             "intersecting_pairs",
-            [](World& w, bool details) {
+            [](World& w, bool details, std::optional<std::size_t> limit) {
+                if (limit && *limit == 0)
+                    throw py::value_error("World.intersecting_pairs(): limit must be >= 1 (None: every pair)");
                 std::vector<PCCD::World_pair> pairs;
                 {
                     const auto l = w.lock();
                     py::gil_scoped_release release;
-                    pairs = w.world().intersecting_pairs();
+                    if (limit)
+                        w.world().for_each_intersecting_pair([&](const PCCD::World_pair& p) {
+                            pairs.push_back(p);
+                            return pairs.size() < *limit; // false: the query stops
+                        });
+                    else
+                        pairs = w.world().intersecting_pairs();
                 }
                 py::list out;
                 for (const PCCD::World_pair& p : pairs) {
@@ -504,7 +512,7 @@ ValueError
                 }
                 return out;
             },
-            py::kw_only(), py::arg("details") = false,
+            py::kw_only(), py::arg("details") = false, py::arg("limit") = py::none(),
             R"doc(Every pair of instances whose surfaces intersect.
 
 Parameters
@@ -513,6 +521,10 @@ details : bool, optional
     False (default): tuples (a, b); True: tuples (a, b, status, point) with status 'intersecting'
     or 'undecided' (a budget of the options ran out; reported so that no contact is missed) and
     point the (3,) intersection point found (NaN when undecided).
+limit : int, optional
+    Stop after the first `limit` pairs (>= 1; the narrow phase then answers at most one more
+    block of candidate pairs): ``limit=1`` asks whether anything touches. None (default): every
+    pair.
 
 Returns
 -------

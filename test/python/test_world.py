@@ -134,6 +134,11 @@ def test_pairs_equal_brute_force_after_moves_insertions_and_erasures(objects):
         assert all(h in world for h in added)
         assert len(world) == n
     assert total >= n  # the scenes do collide
+    # Early stop: the first pairs of the full answer.
+    everything = world.intersecting_pairs()
+    assert world.intersecting_pairs(limit=1) == everything[:1]
+    assert world.intersecting_pairs(limit=3, details=True)[2][:2] == everything[2]
+    assert world.intersecting_pairs(limit=10 ** 6) == everything
     # Erased slots are reused with a new generation: the old handles are stale.
     assert any(h.generation > 0 for h in world.handles())
 
@@ -377,6 +382,8 @@ def test_bad_arguments_raise_clear_errors(objects):
             world.within_distance(h, margin)
         with pytest.raises(ValueError, match="margin"):
             world.within_distance_object(objects[0], None, margin)
+    with pytest.raises(ValueError, match="limit must be >= 1"):
+        world.intersecting_pairs(limit=0)
     with pytest.raises(ValueError, match="empty or not finite"):
         world.overlapping([1, 1, 1], [0, 0, 0])
     with pytest.raises(ValueError, match=r"shape \(3,\)"):
