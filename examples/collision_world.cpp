@@ -30,7 +30,7 @@ int main()
         PCCD::testing::Sphere_shape(Eigen::Vector3d::Zero(), 0.5).sample(1500, engine).points);
 
     const auto random_pose = [&] {
-        const double side = 8.0; // about 1.5 contacts per instance
+        const double side = 8.0; // about one intersecting pair per three instances
         return Pose(PCCD::testing::uniform_random_rotation(engine),
                     Eigen::Vector3d(PCCD::uniform_real(engine, 0, side), PCCD::uniform_real(engine, 0, side),
                                     PCCD::uniform_real(engine, 0, side)));
@@ -76,5 +76,5 @@ int main()
     // Which instances does one more sphere, outside the world, touch?
     const std::vector<PCCD::World_hit> hits = world.intersecting(*sphere, Pose(Eigen::Matrix3d::Identity(),
                                                                              Eigen::Vector3d(2.5, 2.5, 2.5)));
-    std::cout << "a sphere at (2.5, 2.5, 2.5) touches " << hits.size() << " instances\n";
+    std::cout << "a sphere at (2.5, 2.5, 2.5) touches " << hits.size() << (hits.size() == 1 ? " instance\n" : " instances\n");
 }
