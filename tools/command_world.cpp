@@ -320,7 +320,7 @@ void register_world(CLI::App& app)
     cmd->add_flag("--normalize", o->normalize,
                   "Centre and scale each object into [-1,1]^3 (bounding box) before preprocessing");
     cmd->add_option("--seed", o->seed, "Seed of the narrow phase (pair (a, b) uses pair_seed(seed, key(a, b)))");
-    cmd->add_option("--hierarchy", o->hierarchy, "Traversal of the narrow phase: likelihood (default), depth_first, flat")
+    cmd->add_option("--hierarchy", o->hierarchy, "Traversal of the narrow phase: likelihood (default), depth-first, flat")
         ->check(CLI::IsMember(traversal_names()));
     cmd->add_option("--budget-us", o->budget_us,
                     "Time budget per pair in microseconds (0: none); a pair that runs out is reported 'undecided'");
