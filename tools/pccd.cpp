@@ -23,6 +23,7 @@ int main(int argc, char** argv)
     pccd_tool::register_distance(app);
     pccd_tool::register_bench(app);
     pccd_tool::register_render(app);
+    pccd_tool::register_world(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

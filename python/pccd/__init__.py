@@ -33,6 +33,10 @@ distance_many
     distance for many pairs in one call, on several threads (seeded by `pair_seed`).
 DistanceResult, ClearanceResult, ContactResult, Contact
     Their answers, with the attributes named as the fields of PCCD's C++ results.
+World, WorldHandle
+    A collision world: many posed instances of shared objects, all intersecting pairs at once
+    (broad phase, parallel narrow phase, cache), filters, one-object, distance and box queries;
+    ``world_pair_key`` and ``pair_seed`` give the seed of each pair.
 orthonormalize
     The nearest rigid pose to a matrix whose rotation part is not quite one, and how far it
     moved (queries refuse R with R^T R - I beyond 1e-5; 6 printed decimals always pass).
@@ -62,6 +66,8 @@ from ._pccd import (
     DistanceResult,
     Object,
     Result,
+    World,
+    WorldHandle,
     __version__,
     contacts,
     distance,
@@ -74,6 +80,7 @@ from ._pccd import (
     pair_seed,
     read_points,
     within_distance,
+    world_pair_key,
     write_points,
 )
 
@@ -97,4 +104,7 @@ __all__ = [
     "ClearanceResult",
     "ContactResult",
     "Contact",
+    "World",
+    "WorldHandle",
+    "world_pair_key",
 ]
