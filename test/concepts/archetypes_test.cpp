@@ -595,6 +595,7 @@ TEST_CASE("the intersection queries run on collision-object archetypes as on the
     }
 }
 
+// CollisionObject is also all ray_intersection() may use.
 TEST_CASE("the ray query runs on the collision-object archetype as on the model", "[concepts]")
 {
     const auto sample = sample_shape(unit_sphere(), 3000, 0.0, 93);
