@@ -169,7 +169,7 @@ void evaluate(const PCCD::testing::Scan_model& model, const std::string& cloud_n
     const double s = model.clean_spacing;
     const Pose rest;
     const PCCD::Linear_motion still(rest, rest);
-    for (const std::string kind : {"approach", "fast", "screw"}) {
+    for (const char* kind : {"approach", "fast", "screw"}) {
         Row row;
         row.model = model.name;
         row.cloud = cloud_name;

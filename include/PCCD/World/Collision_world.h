@@ -514,7 +514,7 @@ public:
                 if (!call(f, World_ray_hit{World_handle{e.index, s.generation}, e.hit})) return;
                 continue;
             }
-            const Ray_hit hit = ray_intersection(*s.object, s.pose, origin, d, t_max, options);
+            const Ray_hit hit = ray_intersection(*s.object, s.pose, origin, direction, t_max, options);
             if (hit.status == Ray_status::hit)
                 queue.push(Entry{hit.t, e.index, true, hit});
             else if (hit.status == Ray_status::undecided)
