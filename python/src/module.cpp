@@ -32,4 +32,5 @@ PYBIND11_MODULE(_pccd, m)
     pccd_python::add_object(m);
     pccd_python::add_queries(m);
     pccd_python::add_proximity(m);
+    pccd_python::add_continuous(m);
 }

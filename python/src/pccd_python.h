@@ -70,6 +70,7 @@ void add_io(py::module_& m);
 void add_object(py::module_& m);
 void add_queries(py::module_& m);
 void add_proximity(py::module_& m);
+void add_continuous(py::module_& m);
 
 /// Reads one keyword argument of a query into `field`: TypeError naming the function, the key and
 /// the value when it has the wrong type (the options' own checks then raise ValueError).
