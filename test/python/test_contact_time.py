@@ -8,6 +8,8 @@ ValueError or TypeError."""
 import json
 import math
 import subprocess
+import threading
+import time
 
 import numpy as np
 import pytest
@@ -139,6 +141,40 @@ def test_the_batch_equals_the_single_calls(ball):
         expected = pccd.time_of_contact(*pairs[i][:4], motion="screw", tolerance=0.1, seed=pccd.pair_seed(24301, i))
         assert same_result(got, expected)
     assert pccd.time_of_contact_many([]) == []
+
+
+@pytest.mark.parametrize("batch", [False, True])
+def test_the_queries_release_the_gil(ball, batch):
+    """While one query (or a batch) runs, Python code on another thread keeps running. A pass at a
+    gap of 0.1 with near sub-steps of 0.01 sampling radii: about 2000 steps, a few tenths of a
+    second in one call."""
+    graze = (ball, STILL, ball, (at(4.0, 2.1), at(-4.0, 2.1)))
+
+    def query():
+        if batch:
+            pccd.time_of_contact_many([graze, graze], threads=1, near_step=0.01)
+        else:
+            pccd.time_of_contact(*graze, near_step=0.01)
+
+    start = time.perf_counter()
+    query()
+    duration = time.perf_counter() - start
+    assert duration > 0.05, "the queries are too short to observe"
+    window = {}
+
+    def run():
+        window["start"] = time.perf_counter()
+        query()
+        window["end"] = time.perf_counter()
+
+    worker = threading.Thread(target=run)
+    ticks = []
+    worker.start()
+    while worker.is_alive():
+        ticks.append(time.perf_counter())
+    worker.join()
+    middle = [t for t in ticks if window["start"] + 0.25 * duration < t < window["end"] - 0.25 * duration]
+    assert len(middle) > 100, f"{len(middle)} ticks while the queries ran: the GIL was held"
 
 
 # --- the same answers as the C++ calls (pccd contact-time --json) --------------------------------
