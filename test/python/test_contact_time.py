@@ -311,3 +311,14 @@ def test_bad_batches_are_value_errors_before_any_work(ball):
         pccd.time_of_contact_many([(ball, STILL, ball, THROUGH)], threads=0)
     with pytest.raises(ValueError, match="tolerance -1 must be finite and >= 0"):
         pccd.time_of_contact_many([(ball, STILL, ball, THROUGH)], tolerance=-1.0)
+
+
+def test_help_reads_like_numpy():
+    for f in (pccd.time_of_contact, pccd.time_of_contact_many):
+        doc = f.__doc__
+        assert "Parameters\n----------" in doc and "Returns\n-------" in doc and "Raises\n------" in doc, f
+        for name in ("motion", "tolerance", "time_accuracy", "near_step", "max_steps", "seed"):
+            assert f"\n{name} : " in doc, (f, name)
+    doc = pccd.ContactTimeResult.__doc__
+    for name in ("status", "t", "t_low, t_high", "point", "normal", "counters", "query_us"):
+        assert f"\n{name} : " in doc, name
