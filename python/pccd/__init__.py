@@ -38,6 +38,10 @@ time_of_contact, time_of_contact_many
     and an end pose) first come into contact; many pairs in one call, on several threads.
 ContactTimeResult
     Its answer: ``status``, ``t``, ``t_low``, ``t_high``, ``point``, ``normal``, ``counters``.
+World, WorldHandle
+    A collision world: many posed instances of shared objects, all intersecting pairs at once
+    (broad phase, parallel narrow phase, cache), filters, one-object, distance and box queries;
+    ``world_pair_key`` and ``pair_seed`` give the seed of each pair.
 orthonormalize
     The nearest rigid pose to a matrix whose rotation part is not quite one, and how far it
     moved (queries refuse R with R^T R - I beyond 1e-5; 6 printed decimals always pass).
@@ -68,6 +72,8 @@ from ._pccd import (
     DistanceResult,
     Object,
     Result,
+    World,
+    WorldHandle,
     __version__,
     contacts,
     distance,
@@ -82,6 +88,7 @@ from ._pccd import (
     time_of_contact,
     time_of_contact_many,
     within_distance,
+    world_pair_key,
     write_points,
 )
 
@@ -108,4 +115,7 @@ __all__ = [
     "time_of_contact",
     "time_of_contact_many",
     "ContactTimeResult",
+    "World",
+    "WorldHandle",
+    "world_pair_key",
 ]

@@ -1,5 +1,5 @@
 // python/src/module.cpp -- the extension module pccd._pccd: adds the parts (I/O, Object,
-// intersection queries, proximity queries) and maps PCCD's exceptions to Python's:
+// intersection queries, proximity queries, collision worlds) and maps PCCD's exceptions to Python's:
 // PCCD::File_error -> OSError, PCCD::Invalid_input and PCCD::Precondition_failure -> ValueError,
 // PCCD::Assertion_failure -> RuntimeError, each with PCCD's message (doc/manual/python.md,
 // "Errors").
@@ -32,5 +32,6 @@ PYBIND11_MODULE(_pccd, m)
     pccd_python::add_object(m);
     pccd_python::add_queries(m);
     pccd_python::add_proximity(m);
+    pccd_python::add_world(m);
     pccd_python::add_continuous(m);
 }

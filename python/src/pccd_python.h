@@ -3,7 +3,10 @@
 // the functions that add each part of the module. The module is described in doc/manual/python.md.
 #pragma once
 
+#include <PCCD/Intersection/Interpolation_search.h>
+#include <PCCD/Intersection/Intersection_options.h>
 #include <PCCD/Point_cloud_object.h>
+#include <PCCD/Proximity/Distance_result.h>
 #include <PCCD/Rigid_transform_3.h>
 
 #include <pybind11/numpy.h>
@@ -71,6 +74,19 @@ void add_object(py::module_& m);
 void add_queries(py::module_& m);
 void add_proximity(py::module_& m);
 void add_continuous(py::module_& m);
+void add_world(py::module_& m);
+
+/// The narrow phase of a pccd.World: do_intersect's keyword arguments (the same names, defaults
+/// and checks as pccd.do_intersect) read into Intersection_options and the interpolation search's
+/// parameters. method='rst' raises ValueError (a world answers with the interpolation search).
+struct World_narrow_phase {
+    PCCD::Intersection_options options;
+    PCCD::Interpolation_search isearch;
+};
+World_narrow_phase world_narrow_phase(const py::kwargs& kwargs, const char* function);
+
+/// A pccd.ClearanceResult (proximity.cpp) holding `r`, for World.within_distance.
+py::object clearance_result(const PCCD::Clearance_result& r);
 
 /// Reads one keyword argument of a query into `field`: TypeError naming the function, the key and
 /// the value when it has the wrong type (the options' own checks then raise ValueError).

@@ -408,6 +408,8 @@ points_inside : int
 
 } // namespace
 
+py::object clearance_result(const PCCD::Clearance_result& r) { return py::cast(Clearance_held{r}); }
+
 void add_proximity(py::module_& m)
 {
     py::class_<Distance_held>(m, "DistanceResult", distance_result_doc)

@@ -461,6 +461,15 @@ query_us : float
 
 } // namespace
 
+World_narrow_phase world_narrow_phase(const py::kwargs& kwargs, const char* function)
+{
+    const Query_parameters q = parameters(query_arguments(kwargs, false, function));
+    if (q.rst)
+        throw py::value_error(std::string(function) + "(): method must be 'isearch': a world answers its pairs with the "
+                                                      "interpolation search");
+    return World_narrow_phase{q.options, q.isearch};
+}
+
 Posed_pairs posed_pairs(const py::iterable& pairs)
 {
     Posed_pairs out;

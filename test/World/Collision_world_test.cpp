@@ -1,8 +1,9 @@
 // Tests of Collision_world (doc/manual/world.md): on random scenes of 10 to 200 shared sphere and
 // torus clouds (fixed seeds), after random moves, insertions and erasures, the intersecting pairs
 // equal those of brute-force do_intersect over all pairs with the documented pair seed; the answers
-// do not depend on the thread count or the cache; filters, excluded pairs, the one-object queries,
-// within_distance and box queries agree with brute force; bad input gets Invalid_input.
+// do not depend on the thread count, the cache or the world boxes' depth; filters, excluded pairs,
+// the one-object queries, within_distance and box queries agree with brute force; bad input gets
+// Invalid_input.
 #include <PCCD/World/Collision_world.h>
 #include <PCCD/World/World_handle.h>
 #include <PCCD/World/World_options.h>
@@ -141,6 +142,7 @@ TEST_CASE("Collision_world: the cache and the thread count do not change the ans
     one.threads = 1;
     two.threads = 2;
     uncached.cache_results = false;
+    uncached.box_depth = 0; // looser boxes: more candidates, the same answers
     World w1(one), w2(two), w3(uncached);
     std::vector<World_handle> handles;
     for (std::size_t i = 0; i < n; ++i) {
@@ -392,5 +394,10 @@ TEST_CASE("Collision_world: bad input gets Invalid_input", "[world]")
     PCCD::World_options tree;
     tree.tree.fat_margin = -1.0;
     CHECK_THROWS_AS(World(tree), PCCD::Invalid_input);
+    PCCD::World_options depth;
+    depth.box_depth = -1;
+    CHECK_THROWS_AS(World(depth), PCCD::Invalid_input);
+    depth.box_depth = 33;
+    CHECK_THROWS_AS(World(depth), PCCD::Invalid_input);
     CHECK(world.size() == 2);
 }

@@ -86,6 +86,18 @@ function(pccd_contact_time_reference)
   endif()
 endfunction()
 
+# pccd_world_reference(<scene.csv> <pccd world --json output file>): the brute force of
+# world_reference.cpp (do_intersect on every pair with the documented pair seed) equals the pairs
+# pccd world printed; fails the test, with its report, otherwise (also when no pair intersects).
+function(pccd_world_reference scene json)
+  execute_process(COMMAND ${WORLD_REFERENCE} ${scene} ${json} WORKING_DIRECTORY ${WORK}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message("$ world_reference ${scene} ${json}\n[exit ${rc}]\n${out}${err}")
+  if(NOT rc STREQUAL "0")
+    message(FATAL_ERROR "pccd world and the brute force disagree (or no pair intersects, or the JSON does not parse)")
+  endif()
+endfunction()
+
 # pccd_json_number(<out var> <json> <key>): a top-level number of a JSON object.
 function(pccd_json_number out json key)
   string(JSON value ERROR_VARIABLE error GET "${json}" ${key})
@@ -602,6 +614,67 @@ elseif(CASE STREQUAL "progress_terminal")
       message(FATAL_ERROR "the progress does not name the stage ${stage}")
     endif()
   endforeach()
+elseif(CASE STREQUAL "world_json")
+  # 10 spheres and 10 tori at seeded random poses: the JSON's pairs equal the brute force, and the
+  # scene written by --write-scene, read back with one thread, gives the same pairs (and text).
+  file(REMOVE "${WORK}/world_scene.csv")
+  pccd_run(OK ARGS world --generate sphere.xyz:10 --generate torus.ply:10 --scene-seed 3 --write-scene world_scene.csv
+                   --threads 2 --json
+           MATCH "\"instances\": 20" "\"pairs\": .\n" "\"status\": \"intersecting\"" "\"narrow_phase_queries\": [1-9]"
+                 "\"memory_bytes\": [1-9]" "\"scene\": \"world_scene.csv\"")
+  file(WRITE ${WORK}/world.json "${PCCD_STDOUT}")
+  string(JSON generated_pairs GET "${PCCD_STDOUT}" pairs)
+  pccd_world_reference(world_scene.csv world.json)
+  pccd_run(OK ARGS world world_scene.csv --threads 1 --json STDERR_EMPTY)
+  string(JSON read_pairs GET "${PCCD_STDOUT}" pairs)
+  if(NOT read_pairs STREQUAL generated_pairs)
+    message(FATAL_ERROR "the scene read back gives other pairs than the generated one")
+  endif()
+  string(JSON pair_count LENGTH "${PCCD_STDOUT}" pairs)
+  pccd_run(OK ARGS world world_scene.csv
+           MATCH "world: 20 instances of 2 objects: sphere.xyz \\(2000 points\\), torus.ply \\(2000 points\\)"
+                 "intersecting pairs: ${pair_count} \\(" "\n  [0-9]+ [0-9]+ intersecting at ")
+  # Filters: every sphere in group 2, ignoring group 2 -- sphere-sphere pairs disappear.
+  file(STRINGS ${WORK}/world_scene.csv lines)
+  set(filtered "")
+  foreach(line IN LISTS lines)
+    if(line MATCHES "^sphere.xyz,")
+      string(APPEND filtered "${line},2,0xFFFFFFFD\n")
+    else()
+      string(APPEND filtered "${line}\n")
+    endif()
+  endforeach()
+  file(WRITE ${WORK}/world_filtered.csv "${filtered}")
+  pccd_run(OK ARGS world world_filtered.csv --json)
+  file(WRITE ${WORK}/world_filtered.json "${PCCD_STDOUT}")
+  pccd_world_reference(world_filtered.csv world_filtered.json)
+elseif(CASE STREQUAL "world_png")
+  file(REMOVE "${WORK}/world.png")
+  pccd_run(OK ARGS world --generate sphere.xyz:6 --generate torus.ply:6 --png world.png --size 320x240
+           MATCH "wrote [^\n]*world.png: touching instances red, the others grey")
+  pccd_check_png(world.png 320 240)
+elseif(CASE STREQUAL "world_bad_input")
+  set(row "1,0,0,0,0,1,0,0,0,0,1,0")
+  file(WRITE ${WORK}/world_fields.csv "sphere.xyz,${row}\n\nsphere.xyz,1,0,0,0,0,1,0,0,0,0,1\n")
+  pccd_run(FAIL ARGS world world_fields.csv
+           MATCH "pccd: error: world_fields.csv:3: expected a file and 12 numbers .*got 12 fields")
+  file(WRITE ${WORK}/world_nan.csv "file,r00,r01,r02,t0,r10,r11,r12,t1,r20,r21,r22,t2\nsphere.xyz,${row}\nsphere.xyz,1,0,0,nan,0,1,0,0,0,0,1,0\n")
+  pccd_run(FAIL ARGS world world_nan.csv MATCH "pccd: error: world_nan.csv:3: pose: .*(NaN|nan|not finite)")
+  file(WRITE ${WORK}/world_word.csv "sphere.xyz,1,0,0,0,0,1,0,0,0,0,1,x0\n")
+  pccd_run(FAIL ARGS world world_word.csv MATCH "pccd: error: world_word.csv:1: pose: \"x0\" \\(number 12\\) is not a number")
+  file(WRITE ${WORK}/world_scaled.csv "sphere.xyz,2,0,0,0,0,2,0,0,0,0,2,0\n")
+  pccd_run(FAIL ARGS world world_scaled.csv MATCH "pccd: error: world_scaled.csv:1: pose: rigid transform")
+  file(WRITE ${WORK}/world_group.csv "sphere.xyz,${row},-1,1\n")
+  pccd_run(FAIL ARGS world world_group.csv MATCH "pccd: error: world_group.csv:1: group \"-1\" is not an integer in \\[0, 2\\^32\\)")
+  file(WRITE ${WORK}/world_missing.csv "sphere.xyz,${row}\nno_such_cloud.xyz,${row}\n")
+  pccd_run(FAIL ARGS world world_missing.csv MATCH "no_such_cloud.xyz: .*missing file")
+  file(WRITE ${WORK}/world_empty.csv "# nothing\n")
+  pccd_run(FAIL ARGS world world_empty.csv MATCH "pccd: error: world_empty.csv: no instances")
+  pccd_run(FAIL ARGS world no_such_scene.csv MATCH "pccd: error: .*no_such_scene.csv.*does not exist")
+  pccd_run(FAIL ARGS world MATCH "pccd: error: give either a scene file")
+  pccd_run(FAIL ARGS world world_fields.csv --generate sphere.xyz:3 MATCH "pccd: error: give either a scene file")
+  pccd_run(FAIL ARGS world --generate sphere.xyz MATCH "pccd: error: --generate sphere.xyz: expected FILE:COUNT")
+  pccd_run(FAIL ARGS world --generate sphere.xyz:0 MATCH "expected FILE:COUNT with COUNT an integer from 1")
 elseif(CASE STREQUAL "collide_bunny")
   if(DEFINED ENV{PCCD_DATA_DIR} AND NOT "$ENV{PCCD_DATA_DIR}" STREQUAL "")
     set(DATA_DIR "$ENV{PCCD_DATA_DIR}")

@@ -54,22 +54,43 @@ public:
         m_near = options.near_step * r_min;
     }
 
+    /// Node pairs of an advancement step's walk (see walk()).
+    static inline std::size_t walk_budget = 64;
+
     double speed() const { return m_speed; }
     double accuracy() const { return m_accuracy; }
     double near() const { return m_near; }
 
-    /// A lower bound of the distance between the surfaces at time t (certified as the proximity
-    /// queries' lower_bound: the point pairs' distance minus both surfaces' radii), or a value >=
-    /// `limit` when nothing is closer than `limit`.
-    double lower_bound(double t, double limit)
+    /// What one walk of the two hierarchies at time t gives: a lower bound of the distance between
+    /// the surfaces (certified as the proximity queries' lower_bound: the point pairs' distance
+    /// minus both surfaces' radii; a value >= `limit` when nothing is closer than `limit`), and, on
+    /// request, the distance of the closest witness pair on the surfaces (the candidates' pairs
+    /// refined as distance() refines them; +infinity when none was found or refined).
+    struct Walk {
+        double lower = 0.0;
+        double gap = std::numeric_limits<double>::infinity();
+    };
+    Walk walk(double t, double limit, bool refine)
     {
         ++m_counters.advancement_steps;
         Distance_counters dc;
-        Proximity_query<A, B> q(m_a, m_motion_a.pose(t), m_b, m_motion_b.pose(t), m_options.distance, dc);
-        const auto walk = q.closest_pairs(1, limit + m_rho);
+        // Far from contact a rough bound is enough: the walk stops after a few node pairs, and its
+        // lower bound is that of the pairs left (the advancement then steps a little shorter).
+        Distance_options o = m_options.distance;
+        if (!refine) o.max_node_pairs = std::min<std::size_t>(o.max_node_pairs.value_or(walk_budget), walk_budget);
+        Proximity_query<A, B> q(m_a, m_motion_a.pose(t), m_b, m_motion_b.pose(t), o, dc);
+        const auto pairs = q.closest_pairs(m_options.distance.candidates, limit + m_rho);
+        Walk w;
+        const double point_lower = std::min(pairs.best.empty() ? limit + m_rho : pairs.best.front().distance, pairs.pending_lower);
+        w.lower = point_lower - m_rho;
+        if (refine)
+            for (const Point_pair& c : pairs.best) {
+                const std::optional<Witness_pair> x = q.refine(c);
+                if (x) w.gap = std::min(w.gap, x->distance());
+            }
         m_counters.node_pairs += dc.node_pairs;
-        const double point_lower = std::min(walk.best.empty() ? limit + m_rho : walk.best.front().distance, walk.pending_lower);
-        return point_lower - m_rho;
+        m_counters.f_evaluations += dc.f_evaluations;
+        return w;
     }
 
     /// Whether the surfaces are within the tolerance at time t.
@@ -181,6 +202,8 @@ Contact_time_result time_of_contact(const A& a, const MA& motion_a, const B& b, 
     std::size_t steps = 0;
     double t = 0.0;
     double clear = -1.0; // the last time known free of contact (-1: none yet)
+    // A witness gap this close to the tolerance is confirmed by a contact check.
+    const double confirm = tol + 0.5 * q.near();
     std::optional<internal::Contact_check> found;
     while (true) {
         if (++steps > options.max_steps) {
@@ -189,23 +212,28 @@ Contact_time_result time_of_contact(const A& a, const MA& motion_a, const B& b, 
             return r;
         }
         const double remaining = v * (1.0 - t); // the farthest any point can still move relative to the other object
-        const double lower = q.lower_bound(t, tol + remaining + q.near());
-        if (lower > tol + remaining) { // nothing can come within the tolerance before t = 1
+        const auto w = q.walk(t, tol + remaining + q.near(), false);
+        if (w.lower > tol + remaining) { // nothing can come within the tolerance before t = 1
             r.status = Contact_time_status::no_contact;
             r.t_low = 1.0;
             return r;
         }
-        if (lower - tol >= q.near()) { // advance: certified free of contact until t + (lower - tol) / v
+        if (w.lower - tol >= q.near()) { // advance: certified free of contact until t + (lower - tol) / v
             clear = t;
-            t = std::min(1.0, t + (lower - tol) / v);
+            t = std::min(1.0, t + (w.lower - tol) / v);
             continue;
         }
-        // The near band: check this time, then a short sub-step.
+        // The near band: the witness pair's gap, refined on the surfaces, steps on while it is
+        // clearly above the tolerance; below, a contact check decides.
         ++r.counters.near_checks;
-        internal::Contact_check c = q.check(t);
-        if (c.contact) {
-            found = c;
-            break;
+        const double gap = q.walk(t, tol + remaining + q.near(), true).gap;
+        std::optional<internal::Contact_check> c;
+        if (!(gap > confirm)) {
+            c = q.check(t);
+            if (c->contact) {
+                found = c;
+                break;
+            }
         }
         clear = t;
         if (t >= 1.0 || v == 0.0) {
@@ -213,15 +241,22 @@ Contact_time_result time_of_contact(const A& a, const MA& motion_a, const B& b, 
             r.t_low = 1.0;
             return r;
         }
-        t = std::min(1.0, t + q.near() / v);
+        const double step = std::isfinite(gap) ? std::max(gap - tol, q.near()) : q.near();
+        t = std::min(1.0, t + step / v);
     }
-    // Contact at t; bisect between the last clear time and t.
+    // Contact at t; bisect between the last clear time and t. A midpoint whose witness gap is
+    // clearly above the tolerance is clear without a contact check.
     double low = clear < 0.0 ? t : clear;
     double high = t;
     while (v * (high - low) > q.accuracy()) {
         if (++steps > options.max_steps) break;
         ++r.counters.bisection_steps;
         const double mid = 0.5 * (low + high);
+        const double gap = q.walk(mid, tol + q.near(), true).gap;
+        if (gap > confirm) {
+            low = mid;
+            continue;
+        }
         internal::Contact_check c = q.check(mid);
         if (c.contact) {
             high = mid;

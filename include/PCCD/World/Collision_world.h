@@ -89,6 +89,8 @@ public:
         internal::check_options(options.intersection, "Collision_world");
         internal::check_options(options.distance, "Collision_world");
         internal::check_threads(options.threads, "Collision_world: threads");
+        if (options.box_depth < 0 || options.box_depth > 32)
+            throw Invalid_input(internal::concat("Collision_world: box_depth ", options.box_depth, " must be in [0, 32]"));
         if (options.intersection.visitor)
             throw Invalid_input("Collision_world: options.intersection.visitor is set; the world answers pairs on several "
                                 "threads at once, so it takes no visitor");
@@ -121,7 +123,7 @@ public:
         s.object = std::move(object);
         s.pose = pose;
         s.filter = filter;
-        s.box = world_box(*s.object, pose);
+        s.box = world_box(*s.object, pose, m_options.box_depth);
         s.stamp = ++m_stamp;
         s.alive = true;
         s.proxy = m_tree.insert(s.box, index);
@@ -134,7 +136,7 @@ public:
     {
         Slot& s = slot(h, "Collision_world::set_pose");
         s.pose = pose;
-        s.box = world_box(*s.object, pose);
+        s.box = world_box(*s.object, pose, m_options.box_depth);
         s.stamp = ++m_stamp;
         m_tree.update(s.proxy, s.box);
     }
@@ -247,38 +249,43 @@ public:
         m_counters = World_counters{};
         const std::vector<Candidate> candidates = candidate_pairs();
         ++m_epoch;
-        // Blocks of candidates: the answers of a block are computed (in parallel) before `f` sees
-        // them, so an early stop wastes at most one block.
+        // Chunks of candidates holding up to `block` pairs the cache cannot answer: those are
+        // computed (in parallel) before `f` sees the chunk's pairs, so an early stop wastes at most
+        // one block of narrow-phase queries, and a step in which few instances moved runs one
+        // parallel loop per `block` queries, not per `block` candidates.
         const std::size_t block = std::max<std::size_t>(64, 16 * worker_count());
         bool stopped = false;
-        std::vector<std::optional<Cache_entry>> answers;
-        for (std::size_t begin = 0; begin < candidates.size() && !stopped; begin += block) {
-            const std::size_t end = std::min(candidates.size(), begin + block);
-            answers.assign(end - begin, std::nullopt);
-            std::vector<std::size_t> todo;
-            for (std::size_t i = begin; i < end; ++i) {
-                const Candidate& c = candidates[i];
+        std::vector<Cache_entry> answers;
+        std::vector<std::size_t> todo;
+        std::vector<Cache_entry> computed;
+        for (std::size_t begin = 0; begin < candidates.size() && !stopped;) {
+            answers.clear();
+            todo.clear();
+            std::size_t end = begin;
+            for (; end < candidates.size() && todo.size() < block; ++end) {
+                const Candidate& c = candidates[end];
                 if (m_options.cache_results) {
                     const auto it = m_cache.find(c.key);
                     if (it != m_cache.end() && it->second.stamp_a == m_slots[c.a].stamp &&
                         it->second.stamp_b == m_slots[c.b].stamp) {
                         it->second.epoch = m_epoch;
-                        answers[i - begin] = it->second;
+                        answers.push_back(it->second);
                         ++m_counters.cached_pairs;
                         continue;
                     }
                 }
-                todo.push_back(i);
+                todo.push_back(end);
+                answers.emplace_back();
             }
             m_counters.narrow_phase_queries += todo.size();
-            std::vector<Cache_entry> computed(todo.size());
+            computed.assign(todo.size(), Cache_entry{});
             run_parallel(todo.size(), [&](std::size_t t) { computed[t] = answer(candidates[todo[t]]); });
             for (std::size_t t = 0; t < todo.size(); ++t) {
                 answers[todo[t] - begin] = computed[t];
                 if (m_options.cache_results) m_cache[candidates[todo[t]].key] = computed[t];
             }
             for (std::size_t i = begin; i < end && !stopped; ++i) {
-                const Cache_entry& e = *answers[i - begin];
+                const Cache_entry& e = answers[i - begin];
                 if (e.status == Intersection_status::separate) continue;
                 const Candidate& c = candidates[i];
                 const World_pair p{World_handle{c.a, m_slots[c.a].generation}, World_handle{c.b, m_slots[c.b].generation},
@@ -286,6 +293,7 @@ public:
                 ++m_counters.reported_pairs;
                 if (!call(f, p)) stopped = true;
             }
+            begin = end;
         }
         // Forget the answers of pairs that are no longer candidates (after a complete pass only).
         if (!stopped && m_options.cache_results)
@@ -349,7 +357,7 @@ public:
         requires LeafIntersector<Policy, Query, Object>
     void for_each_intersecting(const Query& query, const Pose& pose, const Collision_filter& filter, F&& f) const
     {
-        const Box qbox = world_box(query, pose);
+        const Box qbox = world_box(query, pose, m_options.box_depth);
         std::vector<std::uint32_t> others;
         m_tree.for_each_overlapping(qbox, [&](std::uint32_t j) {
             if (qbox.intersects(m_slots[j].box) && may_collide(filter, m_slots[j].filter)) others.push_back(j);
@@ -550,8 +558,8 @@ private:
     void run_parallel(std::size_t n, const Body& body) const
     {
         if (n == 0) return;
-        if (n == 1) {
-            body(0);
+        if (n == 1 || worker_count() == 1) { // no task arena for one worker
+            for (std::size_t t = 0; t < n; ++t) body(t);
             return;
         }
         std::vector<std::exception_ptr> errors(n);
@@ -605,7 +613,7 @@ private:
     template <class Query, class Accept, class F>
     void near_instances(const Query& query, const Pose& pose, double margin, const Accept& accept, F& f) const
     {
-        Box qbox = world_box(query, pose);
+        Box qbox = world_box(query, pose, m_options.box_depth);
         qbox.min().array() -= margin;
         qbox.max().array() += margin;
         std::vector<std::uint32_t> others;

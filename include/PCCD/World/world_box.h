@@ -3,8 +3,10 @@
 // two objects whose boxes are disjoint cannot touch (doc/algorithms.md, "Collision worlds").
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -29,15 +31,30 @@ Eigen::AlignedBox3d world_box(const Object& object, const Rigid_transform_3<doub
     const Eigen::Matrix3d r_abs = pose.rotation().cwiseAbs();
     const double support = double(object.surface().support_radius());
     Eigen::AlignedBox3d box;
-    // Depth-first over the nodes down to `depth` (the left child of node i is i + 1).
-    std::vector<std::pair<std::uint32_t, int>> stack{{0u, 0}};
-    while (!stack.empty()) {
-        const auto [i, level] = stack.back();
-        stack.pop_back();
+    // Depth-first over the nodes down to `depth` (the left child of node i is i + 1); the stack
+    // holds at most one pending right child per level.
+    std::array<std::pair<std::uint32_t, int>, 66> fixed;
+    std::vector<std::pair<std::uint32_t, int>> spill; // levels beyond 64 (depth > 64 and a deep hierarchy)
+    std::size_t top = 0;
+    const auto push = [&](std::uint32_t i, int level) {
+        if (top < fixed.size()) fixed[top] = {i, level};
+        else spill.emplace_back(i, level);
+        ++top;
+    };
+    const auto pop = [&] {
+        --top;
+        if (top < fixed.size()) return fixed[top];
+        const auto item = spill.back();
+        spill.pop_back();
+        return item;
+    };
+    push(0u, 0);
+    while (top > 0) {
+        const auto [i, level] = pop();
         const auto& node = h.node(i);
         if (level < depth && !node.is_leaf()) {
-            stack.emplace_back(i + 1, level + 1);
-            stack.emplace_back(std::uint32_t(node.right), level + 1);
+            push(std::uint32_t(node.right), level + 1);
+            push(i + 1, level + 1);
             continue;
         }
         const double grow = h.has_reach() ? double(node.reach) : support;
