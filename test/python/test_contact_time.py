@@ -143,23 +143,38 @@ def test_the_batch_equals_the_single_calls(ball):
     assert pccd.time_of_contact_many([]) == []
 
 
+@pytest.fixture(scope="module")
+def nested():
+    """A unit sphere and a sphere of radius 0.96 inside it, 0.04 from it everywhere (4000 points
+    each)."""
+    return pccd.Object(sphere_points(4000, radius=1.0)), pccd.Object(sphere_points(4000, radius=0.96, seed=3))
+
+
 @pytest.mark.parametrize("batch", [False, True])
-def test_the_queries_release_the_gil(ball, batch):
-    """While one query (or a batch) runs, Python code on another thread keeps running. A pass at a
-    gap of 0.1 with near sub-steps of 0.01 sampling radii: about 2000 steps, a few tenths of a
-    second in one call."""
-    graze = (ball, STILL, ball, (at(4.0, 2.1), at(-4.0, 2.1)))
+def test_the_queries_release_the_gil(ball, nested, batch):
+    """While one query (or a batch) runs, Python code on another thread keeps running. The query:
+    the first of these that takes 0.05 s or more (their costs depend on how the near band is
+    stepped): B passing A at a gap of 0.1 with near sub-steps of 0.01 sampling radii; the inner
+    sphere turning 3 radians inside the unit sphere, 0.04 from it all the way."""
+    outer, inner = nested
+    candidates = [((ball, STILL, ball, (at(4.0, 2.1), at(-4.0, 2.1))), dict(near_step=0.01)),
+                  ((outer, None, inner, (pose(), pose((0, 0, 1), 3.0))), dict(motion="screw"))]
+    for arguments, options in candidates:
+        start = time.perf_counter()
+        pccd.time_of_contact(*arguments, **options)
+        if time.perf_counter() - start > 0.05:
+            break
 
     def query():
         if batch:
-            pccd.time_of_contact_many([graze, graze], threads=1, near_step=0.01)
+            pccd.time_of_contact_many([arguments] * 3, threads=1, **options)
         else:
-            pccd.time_of_contact(*graze, near_step=0.01)
+            pccd.time_of_contact(*arguments, **options)
 
     start = time.perf_counter()
     query()
     duration = time.perf_counter() - start
-    assert duration > 0.05, "the queries are too short to observe"
+    assert duration > 0.025, "the queries are too short to observe"
     window = {}
 
     def run():
