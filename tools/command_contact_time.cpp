@@ -366,7 +366,7 @@ void register_contact_time(CLI::App& app)
                     "Surfaces closer than this are in contact (world units, >= 0; default 0: they intersect)");
     cmd->add_option("--time-accuracy", o->time_accuracy,
                     "Narrow the contact's bracket until no point moves farther than this within it (world units, "
-                    "> 0; default: 0.1 times the smaller sampling radius)");
+                    "> 0; default: the library's, a fraction of the smaller sampling radius)");
     cmd->add_option("--near-step", o->near_step,
                     "Sub-step of the contact checks near contact, in sampling radii (in (0, 4], default 0.5)");
     cmd->add_option("--max-steps", o->max_steps, "Budget of steps; then the answer is undecided (default 100000)");

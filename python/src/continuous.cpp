@@ -178,7 +178,8 @@ tolerance : float, optional
     surfaces intersect. Finite and >= 0.
 time_accuracy : float, optional
     The bracket [t_low, t_high] of a contact is narrowed until no point moves farther than this
-    (world units) within it. None (default): 0.1 times the smaller sampling radius. Finite and > 0.
+    (world units) within it. None (default): the library's, a fraction of the smaller sampling
+    radius (Contact_time_options::time_accuracy). Finite and > 0.
 near_step : float, optional
     Near contact the motion is checked at sub-steps across which no point moves farther than
     near_step sampling radii (default 0.5; in (0, 4]).

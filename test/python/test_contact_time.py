@@ -42,7 +42,7 @@ def test_spheres_meeting_along_a_line(ball):
     assert r.status == "contact" and bool(r)
     assert abs(r.t - 0.25) * 8 <= SPACING, r
     assert r.t_low <= r.t == r.t_high
-    assert (r.t_high - r.t_low) * 8 <= 0.1 * ball.sampling_radius + 1e-12
+    assert (r.t_high - r.t_low) * 8 <= 0.25 * ball.sampling_radius + 1e-12  # the default time accuracy or finer
     assert r.point.shape == (3,) and r.point.dtype == np.float64
     assert abs(r.point[0] - 1.0) <= SPACING
     assert r.normal[0] > math.cos(math.radians(20)) and np.linalg.norm(r.normal) == pytest.approx(1, abs=1e-9)
