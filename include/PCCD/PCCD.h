@@ -93,8 +93,11 @@
 #include <PCCD/Intersection/Posed_object.h>
 #include <PCCD/Intersection/Query_state.h>
 #include <PCCD/Intersection/Randomized_sampling.h>
+#include <PCCD/Intersection/Ray_hit.h>
+#include <PCCD/Intersection/Ray_options.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Intersection/do_intersect_many.h>
+#include <PCCD/Intersection/ray_intersection.h>
 #include <PCCD/Intersection/refinement.h>
 #include <PCCD/Proximity/Distance_options.h>
 #include <PCCD/Proximity/Distance_result.h>

@@ -123,7 +123,7 @@ TEST_CASE("time_of_contact: spheres meeting along a line and along a screw", "[c
     REQUIRE(r.status == PCCD::Contact_time_status::contact);
     CHECK(std::abs(r.t - 0.25) * 8.0 <= s);
     CHECK(r.t_low <= r.t_high);
-    CHECK((r.t_high - r.t_low) * 8.0 <= 0.1 * a.sampling_radius() + 1e-12);
+    CHECK((r.t_high - r.t_low) * 8.0 <= 0.25 * a.sampling_radius() + 1e-12);
     CHECK(std::abs(r.point.x() - 1.0) <= s);
     CHECK(r.normal.x() > std::cos(20.0 * std::numbers::pi / 180.0)); // B leaves A towards +x
     CHECK(PCCD::do_intersect(a, still.pose(r.t), a, through.pose(r.t)).intersects);

@@ -2,7 +2,7 @@
 // torus clouds (fixed seeds), after random moves, insertions and erasures, the intersecting pairs
 // equal those of brute-force do_intersect over all pairs with the documented pair seed; the answers
 // do not depend on the thread count, the cache or the world boxes' depth; filters, excluded pairs,
-// the one-object queries, within_distance and box queries agree with brute force; bad input gets
+// the one-object queries, within_distance, box and ray queries agree with brute force; bad input gets
 // Invalid_input.
 #include <PCCD/World/Collision_world.h>
 #include <PCCD/World/World_handle.h>
@@ -13,6 +13,7 @@
 #include <catch2/catch.hpp>
 
 #include <PCCD/Intersection/Intersection_visitor.h>
+#include <PCCD/Intersection/ray_intersection.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
 #include <PCCD/testing/pose_generator.h>
@@ -317,6 +318,51 @@ TEST_CASE("Collision_world: one-object queries agree with brute force", "[world]
         }
         CHECK(world.overlapping(box) == expected);
     }
+}
+
+TEST_CASE("Collision_world: rays against the world agree with ray_intersection on every instance", "[world]")
+{
+    PCCD::Random_engine engine(31);
+    const std::size_t n = 40;
+    const double side = scene_side(n);
+    World world;
+    for (std::size_t i = 0; i < n; ++i)
+        world.insert(shapes()[i % shapes().size()], random_pose(engine, side), {i % 2 == 0 ? 1u : 2u, ~0u});
+    std::size_t hits = 0;
+    for (int q = 0; q < 40; ++q) {
+        const Eigen::Vector3d origin(PCCD::uniform_real(engine, -1, side + 1), PCCD::uniform_real(engine, -1, side + 1), -2.0);
+        const Eigen::Vector3d target(PCCD::uniform_real(engine, 0, side), PCCD::uniform_real(engine, 0, side), side);
+        const Eigen::Vector3d direction = target - origin;
+        const double t_max = q % 4 == 0 ? 0.5 * direction.norm() : std::numeric_limits<double>::infinity();
+        const PCCD::Collision_filter only_even{1u, 1u};
+        for (const bool filtered : {false, true}) {
+            // Brute force: every instance's first hit, sorted by t.
+            std::vector<std::pair<double, World_handle>> expected;
+            for (const World_handle h : world.handles()) {
+                if (filtered && !PCCD::may_collide(only_even, world.filter(h))) continue;
+                const PCCD::Ray_hit r = PCCD::ray_intersection(world.object(h), world.pose(h), origin, direction, t_max);
+                REQUIRE(r.status != PCCD::Ray_status::undecided);
+                if (r.hit) expected.emplace_back(r.t, h);
+            }
+            std::sort(expected.begin(), expected.end());
+            std::vector<std::pair<double, World_handle>> found;
+            world.for_each_ray_hit(origin, direction, t_max, {}, filtered ? only_even : PCCD::Collision_filter{},
+                                   [&](const PCCD::World_ray_hit& h) { found.emplace_back(h.hit.t, h.handle); });
+            CHECK(found == expected);
+            const auto first = world.ray_cast(origin, direction, t_max, {}, filtered ? only_even : PCCD::Collision_filter{});
+            REQUIRE(first.has_value() == !expected.empty());
+            if (first) {
+                CHECK(first->handle == expected.front().second);
+                CHECK(first->hit.t == expected.front().first);
+                ++hits;
+            }
+        }
+    }
+    CHECK(hits >= 10);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    CHECK_THROWS_AS(world.ray_cast(Eigen::Vector3d(nan, 0, 0), Eigen::Vector3d::UnitZ()), PCCD::Invalid_input);
+    CHECK_THROWS_AS(world.ray_cast(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()), PCCD::Invalid_input);
+    CHECK_THROWS_AS(world.ray_cast(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), -1.0), PCCD::Invalid_input);
 }
 
 TEST_CASE("Collision_world: world boxes hold every point's domain ball", "[world]")

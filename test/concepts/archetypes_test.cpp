@@ -21,6 +21,7 @@
 #include <PCCD/Intersection/Query_state.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Intersection/do_intersect_many.h>
+#include <PCCD/Intersection/ray_intersection.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Proximity/contacts.h>
 #include <PCCD/Proximity/distance.h>
@@ -591,6 +592,24 @@ TEST_CASE("the intersection queries run on collision-object archetypes as on the
         CHECK(PCCD::do_intersect(arch, identity, arch, pose, {}, archetype::Leaf_intersector{}).intersects == expected);
         const auto curve = PCCD::intersection_points(arch, identity, arch, pose);
         CHECK(curve.points.size() == PCCD::intersection_points(object, identity, object, pose).points.size());
+    }
+}
+
+// CollisionObject is also all ray_intersection() may use.
+TEST_CASE("the ray query runs on the collision-object archetype as on the model", "[concepts]")
+{
+    const auto sample = sample_shape(unit_sphere(), 3000, 0.0, 93);
+    const archetype::Object object(columns(sample.points));
+    const Arch arch(object);
+    const PCCD::Rigid_transform_3<double> pose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.5, 0.0, 0.0));
+    for (const double y : {0.3, 1.5}) {
+        const Eigen::Vector3d origin(0.5, y, -3.0), direction(0.0, 0.0, 1.0);
+        const PCCD::Ray_hit model = PCCD::ray_intersection(object, pose, origin, direction);
+        const PCCD::Ray_hit with_archetype = PCCD::ray_intersection(arch, pose, origin, direction);
+        CHECK(model.hit == (y < 1.0));
+        CHECK(with_archetype.hit == model.hit);
+        CHECK(with_archetype.counters.f_evaluations == model.counters.f_evaluations);
+        if (model.hit) CHECK(with_archetype.t == model.t);
     }
 }
 

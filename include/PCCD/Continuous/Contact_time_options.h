@@ -23,8 +23,9 @@ struct Contact_time_options {
     /// implicit surfaces intersect (do_intersect()). Finite and >= 0.
     double tolerance = 0.0;
     /// The bracket [t_low, t_high] of a contact is narrowed by bisection until no point moves
-    /// farther than this between t_low and t_high (world units). Unset (default): 0.1 times the
-    /// smaller sampling radius of the two objects. When set: finite and > 0.
+    /// farther than this between t_low and t_high (world units). Unset (default): 0.25 times the
+    /// smaller sampling radius of the two objects (about half a mean spacing on area-sampled
+    /// clouds). When set: finite and > 0.
     std::optional<double> time_accuracy = std::nullopt;
     /// Where the certified lower bound cannot exclude contact (the surfaces are within their sampling
     /// radii of each other), the motion is checked at sub-steps across which no point moves farther

@@ -50,12 +50,13 @@ public:
         const double r_a = double(a.sampling_radius()), r_b = double(b.sampling_radius());
         m_rho = r_a + 2.0 * double(a.noise_estimate()) + r_b + 2.0 * double(b.noise_estimate());
         const double r_min = std::min(r_a, r_b);
-        m_accuracy = options.time_accuracy.value_or(0.1 * r_min);
+        m_accuracy = options.time_accuracy.value_or(0.25 * r_min);
         m_near = options.near_step * r_min;
     }
 
-    /// Node pairs of an advancement step's walk (see walk()).
+    /// Node pairs of an advancement step's walk and of a near-band walk (see walk()).
     static inline std::size_t walk_budget = 64;
+    static inline std::size_t refine_budget = 512;
 
     double speed() const { return m_speed; }
     double accuracy() const { return m_accuracy; }
@@ -77,9 +78,10 @@ public:
         // Far from contact a rough bound is enough: the walk stops after a few node pairs, and its
         // lower bound is that of the pairs left (the advancement then steps a little shorter).
         Distance_options o = m_options.distance;
-        if (!refine) o.max_node_pairs = std::min<std::size_t>(o.max_node_pairs.value_or(walk_budget), walk_budget);
+        const std::size_t budget = refine ? refine_budget : walk_budget;
+        o.max_node_pairs = std::min<std::size_t>(o.max_node_pairs.value_or(budget), budget);
         Proximity_query<A, B> q(m_a, m_motion_a.pose(t), m_b, m_motion_b.pose(t), o, dc);
-        const auto pairs = q.closest_pairs(m_options.distance.candidates, limit + m_rho);
+        const auto pairs = q.closest_pairs(refine ? 1 : m_options.distance.candidates, limit + m_rho);
         Walk w;
         const double point_lower = std::min(pairs.best.empty() ? limit + m_rho : pairs.best.front().distance, pairs.pending_lower);
         w.lower = point_lower - m_rho;
@@ -228,7 +230,7 @@ Contact_time_result time_of_contact(const A& a, const MA& motion_a, const B& b, 
         ++r.counters.near_checks;
         const double gap = q.walk(t, tol + remaining + q.near(), true).gap;
         std::optional<internal::Contact_check> c;
-        if (!(gap > confirm)) {
+        if (!(std::isfinite(gap) && gap > confirm)) { // close, or unknown (no pair refined)
             c = q.check(t);
             if (c->contact) {
                 found = c;
@@ -253,7 +255,7 @@ Contact_time_result time_of_contact(const A& a, const MA& motion_a, const B& b, 
         ++r.counters.bisection_steps;
         const double mid = 0.5 * (low + high);
         const double gap = q.walk(mid, tol + q.near(), true).gap;
-        if (gap > confirm) {
+        if (std::isfinite(gap) && gap > confirm) {
             low = mid;
             continue;
         }

@@ -13,6 +13,7 @@
 #include <exception>
 #include <memory>
 #include <optional>
+#include <queue>
 #include <span>
 #include <type_traits>
 #include <unordered_map>
@@ -29,6 +30,9 @@
 #include <PCCD/Intersection/Intersection_result.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Intersection/do_intersect_many.h>
+#include <PCCD/Intersection/Ray_hit.h>
+#include <PCCD/Intersection/Ray_options.h>
+#include <PCCD/Intersection/ray_intersection.h>
 #include <PCCD/Proximity/distance.h>
 #include <PCCD/Rigid_transform_3.h>
 #include <PCCD/World/Dynamic_AABB_tree.h>
@@ -456,6 +460,68 @@ public:
                 return inside ? call(f, World_handle{candidates[t], m_slots[candidates[t]].generation}) : true;
             });
     }
+
+    /// The first hit of the ray origin + t direction / |direction|, t in [0, t_max], on the surfaces
+    /// of the instances whose filter agrees with `filter`: the instance and its Ray_hit
+    /// (PCCD::ray_intersection with `options`); nullopt when the ray meets none. An instance whose
+    /// query ran out of its budget (status undecided) before any hit is returned as it is, so that a
+    /// budget never turns into a miss. \throws Invalid_input as ray_intersection for a bad ray.
+    std::optional<World_ray_hit> ray_cast(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
+                                          double t_max = std::numeric_limits<double>::infinity(),
+                                          const Ray_options& options = {}, const Collision_filter& filter = {}) const
+    {
+        std::optional<World_ray_hit> first;
+        for_each_ray_hit(origin, direction, t_max, options, filter, [&](const World_ray_hit& h) {
+            first = h;
+            return false;
+        });
+        return first;
+    }
+
+    /// Calls `f(const World_ray_hit&)` for every instance the ray meets (its first hit on that
+    /// instance), in increasing t, among those whose filter agrees with `filter`; `f` may return
+    /// bool, false stopping the query (the instances behind are then not evaluated). An undecided
+    /// instance is reported where the ray enters its box. \throws Invalid_input for a bad ray.
+    template <class F>
+    void for_each_ray_hit(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, double t_max,
+                          const Ray_options& options, const Collision_filter& filter, F&& f) const
+    {
+        if (!origin.allFinite() || !direction.allFinite() || !(direction.norm() > 0.0) || std::isnan(t_max) || t_max < 0.0)
+            throw Invalid_input(internal::concat("Collision_world::ray_cast: origin [", origin.transpose(), "], direction [",
+                                                 direction.transpose(), "] and t_max ", t_max,
+                                                 " must be finite, the direction non-zero, t_max >= 0 (+infinity allowed)"));
+        const Eigen::Vector3d d = direction.normalized();
+        // Best first: an instance waits under the t where the ray enters its box until evaluated,
+        // then under its hit; a hit popped before every other key is the next in t.
+        struct Entry {
+            double key;
+            std::uint32_t index;
+            bool evaluated;
+            Ray_hit hit;
+        };
+        const auto later = [](const Entry& x, const Entry& y) {
+            return x.key > y.key || (x.key == y.key && x.index > y.index);
+        };
+        std::priority_queue<Entry, std::vector<Entry>, decltype(later)> queue(later);
+        m_tree.for_each_crossed(origin, d, t_max, [&](std::uint32_t j, double t_enter) {
+            if (may_collide(filter, m_slots[j].filter)) queue.push(Entry{t_enter, j, false, Ray_hit{}});
+        });
+        while (!queue.empty()) {
+            Entry e = queue.top();
+            queue.pop();
+            const Slot& s = m_slots[e.index];
+            if (e.evaluated) {
+                if (!call(f, World_ray_hit{World_handle{e.index, s.generation}, e.hit})) return;
+                continue;
+            }
+            const Ray_hit hit = ray_intersection(*s.object, s.pose, origin, d, t_max, options);
+            if (hit.status == Ray_status::hit)
+                queue.push(Entry{hit.t, e.index, true, hit});
+            else if (hit.status == Ray_status::undecided)
+                queue.push(Entry{e.key, e.index, true, hit});
+        }
+    }
+
     /// @}
 
     /// \name Broad phase and memory

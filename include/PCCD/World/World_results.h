@@ -1,6 +1,7 @@
 // PCCD/World/World_results.h -- what the queries of a Collision_world report: World_pair (two
 // instances whose surfaces touch), World_hit (an instance touched by a query object),
-// World_proximity (an instance within a distance) (doc/manual/world.md, "Queries").
+// World_proximity (an instance within a distance), World_ray_hit (an instance a ray meets)
+// (doc/manual/world.md, "Queries").
 #pragma once
 
 #include <limits>
@@ -8,6 +9,7 @@
 #include <Eigen/Core>
 
 #include <PCCD/Intersection/Intersection_result.h>
+#include <PCCD/Intersection/Ray_hit.h>
 #include <PCCD/Proximity/Distance_result.h>
 #include <PCCD/World/World_handle.h>
 
@@ -32,6 +34,13 @@ struct World_hit {
     Intersection_status status = Intersection_status::intersecting;
     /// The intersection point found (world frame); NaN when undecided.
     Eigen::Vector3d point = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+};
+
+/// An instance of the world a ray meets: the first hit of the ray on its surface
+/// (PCCD::ray_intersection), world frame.
+struct World_ray_hit {
+    World_handle handle;
+    Ray_hit hit;
 };
 
 /// An instance of the world within the asked distance of a query object: the clearance answer of
