@@ -1,6 +1,7 @@
-// tools/pose_cases.h -- the --cases files of `pccd collide` and `pccd distance`: CSV rows of 24
-// numbers, the pose of A and then the pose of B, each a 3x4 [R | t] matrix row by row
-// (doc/manual/cli_collide.md, "--cases FILE").
+// tools/pose_cases.h -- the --cases files of `pccd collide` and `pccd distance` (CSV rows of 24
+// numbers, the pose of A and then the pose of B, each a 3x4 [R | t] matrix row by row;
+// doc/manual/cli_collide.md, "--cases FILE") and of `pccd contact-time` (rows of 48 numbers, the
+// start and end poses of A and of B; doc/manual/continuous.md, "CLI and Python").
 #pragma once
 
 #include "transform_options.h"
@@ -51,6 +52,46 @@ inline std::vector<Pose_case> read_cases(const std::string& path)
         cases.push_back({line, pose_a, pose_b});
     }
     if (cases.empty()) throw PCCD::Invalid_input(path + ": no cases (expected rows of 24 numbers)");
+    return cases;
+}
+
+/// One row of a `pccd contact-time --cases` file: the start and end poses of A and of B.
+struct Motion_case {
+    std::size_t line;
+    PCCD::Rigid_transform_3<double> from_a;
+    PCCD::Rigid_transform_3<double> to_a;
+    PCCD::Rigid_transform_3<double> from_b;
+    PCCD::Rigid_transform_3<double> to_b;
+};
+
+/// The rows of a `pccd contact-time --cases` CSV: 48 numbers each (the poses of A at t = 0 and
+/// t = 1, then those of B; 3x4 row-major each), with the rules of read_cases (comments, blank
+/// lines, an optional header; every other problem throws, naming the file and the line).
+inline std::vector<Motion_case> read_motion_cases(const std::string& path, bool orthonormalize = false)
+{
+    std::ifstream in(path);
+    if (!in)
+        throw PCCD::File_error(path, std::filesystem::exists(path) ? "cannot open the cases file"
+                                                                   : "cannot open the cases file: it does not exist (missing file)");
+    std::vector<Motion_case> cases;
+    bool first_row = true;
+    std::string text;
+    for (std::size_t line = 1; std::getline(in, text); ++line) {
+        const std::vector<std::string> fields = split_fields(text);
+        if (fields.empty() || fields.front().front() == '#') continue;
+        const bool header = first_row && !parse_number(fields.front());
+        first_row = false;
+        if (header) continue;
+        const std::string where = path + ":" + std::to_string(line);
+        if (fields.size() != 48)
+            throw PCCD::Invalid_input(where + ": expected 48 numbers (A at t = 0, A at t = 1, B at t = 0, B at t = 1; "
+                                              "3x4 row-major each), got " + std::to_string(fields.size()) + " fields");
+        cases.push_back({line, make_transform(fields, 0, where + ": A at t = 0", orthonormalize),
+                         make_transform(fields, 12, where + ": A at t = 1", orthonormalize),
+                         make_transform(fields, 24, where + ": B at t = 0", orthonormalize),
+                         make_transform(fields, 36, where + ": B at t = 1", orthonormalize)});
+    }
+    if (cases.empty()) throw PCCD::Invalid_input(path + ": no cases (expected rows of 48 numbers)");
     return cases;
 }
 

@@ -106,6 +106,7 @@
 #include <PCCD/Proximity/distance_many.h>
 
 // Continuous collision: rigid motions and the first contact time
+#include <PCCD/Continuous/Contact_time_names.h>
 #include <PCCD/Continuous/Contact_time_options.h>
 #include <PCCD/Continuous/Rigid_motion.h>
 #include <PCCD/Continuous/time_of_contact.h>

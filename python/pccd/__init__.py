@@ -33,6 +33,11 @@ distance_many
     distance for many pairs in one call, on several threads (seeded by `pair_seed`).
 DistanceResult, ClearanceResult, ContactResult, Contact
     Their answers, with the attributes named as the fields of PCCD's C++ results.
+time_of_contact, time_of_contact_many
+    Continuous collision: when two objects moving rigidly (linear or screw motions between a start
+    and an end pose) first come into contact; many pairs in one call, on several threads.
+ContactTimeResult
+    Its answer: ``status``, ``t``, ``t_low``, ``t_high``, ``point``, ``normal``, ``counters``.
 World, WorldHandle
     A collision world: many posed instances of shared objects, all intersecting pairs at once
     (broad phase, parallel narrow phase, cache), filters, one-object, distance and box queries;
@@ -56,13 +61,14 @@ Examples
 True
 
 The manual: doc/manual/python.md in PCCD's sources (the proximity queries:
-doc/manual/proximity-cli-python.md).
+doc/manual/proximity-cli-python.md; continuous collision: doc/manual/continuous.md).
 """
 
 from ._pccd import (
     ClearanceResult,
     Contact,
     ContactResult,
+    ContactTimeResult,
     DistanceResult,
     Object,
     Result,
@@ -79,6 +85,8 @@ from ._pccd import (
     orthonormalize,
     pair_seed,
     read_points,
+    time_of_contact,
+    time_of_contact_many,
     within_distance,
     world_pair_key,
     write_points,
@@ -104,6 +112,9 @@ __all__ = [
     "ClearanceResult",
     "ContactResult",
     "Contact",
+    "time_of_contact",
+    "time_of_contact_many",
+    "ContactTimeResult",
     "World",
     "WorldHandle",
     "world_pair_key",

@@ -33,4 +33,5 @@ PYBIND11_MODULE(_pccd, m)
     pccd_python::add_queries(m);
     pccd_python::add_proximity(m);
     pccd_python::add_world(m);
+    pccd_python::add_continuous(m);
 }

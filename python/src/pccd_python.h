@@ -73,6 +73,7 @@ void add_io(py::module_& m);
 void add_object(py::module_& m);
 void add_queries(py::module_& m);
 void add_proximity(py::module_& m);
+void add_continuous(py::module_& m);
 void add_world(py::module_& m);
 
 /// The narrow phase of a pccd.World: do_intersect's keyword arguments (the same names, defaults

@@ -1,6 +1,7 @@
 # run_cli_test.cmake -- one test of the pccd command line, selected by CASE:
 #   cmake -DPCCD=<pccd binary> -DWORK=<dir with make_cli_data's files> -DDATA_DIR=<libcgal-demo meshes or "">
-#         -DREFERENCE=<distance_reference binary> -DCASE=<name> -P run_cli_test.cmake
+#         -DREFERENCE=<distance_reference binary> -DCONTACT_TIME_REFERENCE=<contact_time_reference binary>
+#         -DCASE=<name> -P run_cli_test.cmake
 # Each case runs pccd, prints the command and what it wrote, then checks the exit code (0, or an
 # error exit >= 1 that is not a crash) and regular expressions on stdout + stderr. A case whose data
 # is missing prints PCCD_CLI_TEST_SKIPPED (the test's SKIP_REGULAR_EXPRESSION).
@@ -70,6 +71,18 @@ function(pccd_reference)
   message("$ distance_reference ${shown}\n[exit ${rc}]\n${out}${err}")
   if(NOT rc STREQUAL "0")
     message(FATAL_ERROR "pccd distance and the C++ API disagree (or the JSON does not parse)")
+  endif()
+endfunction()
+
+# pccd_contact_time_reference(<contact_time_reference arguments>...): the same for
+# `pccd contact-time` (contact_time_reference.cpp).
+function(pccd_contact_time_reference)
+  execute_process(COMMAND ${CONTACT_TIME_REFERENCE} ${ARGN} WORKING_DIRECTORY ${WORK}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  string(REPLACE ";" " " shown "${ARGN}")
+  message("$ contact_time_reference ${shown}\n[exit ${rc}]\n${out}${err}")
+  if(NOT rc STREQUAL "0")
+    message(FATAL_ERROR "pccd contact-time and the C++ API disagree (or the JSON does not parse)")
   endif()
 endfunction()
 
@@ -410,6 +423,174 @@ elseif(CASE STREQUAL "distance_bad_arguments")
   pccd_run(FAIL ARGS distance sphere.xyz sphere.xyz --margin 1 --contacts MATCH "excludes")
   pccd_run(FAIL ARGS distance sphere.xyz sphere.xyz --cases distance_cases.csv --json MATCH "excludes")
   pccd_run(FAIL ARGS distance no_such_cloud.xyz sphere.xyz MATCH "no_such_cloud.xyz: .*missing file")
+elseif(CASE MATCHES "^contact_time_")
+  # pccd contact-time on make_cli_data's unit sphere (2000 points, mean spacing about 0.08) and
+  # torus (radii 0.7 and 0.3 about z): analytic first contact times, every JSON field and every
+  # --cases row the C++ API's answer bit for bit (contact_time_reference.cpp).
+  set(x_4 1 0 0 4 0 1 0 0 0 0 1 0)
+  set(x_m4 1 0 0 -4 0 1 0 0 0 0 1 0)
+  string(REPLACE ";" "," x_4_csv "${x_4}")
+  string(REPLACE ";" "," x_m4_csv "${x_m4}")
+  set(ct_fields "\"status\": \"contact\"" "\"t\": [0-9.e-]+," "\"t_low\": [0-9.e-]+," "\"t_high\": [0-9.e-]+,"
+                "\"point\": .\n" "\"normal\": .\n" "\"counters\": {" "\"advancement_steps\": [0-9]+"
+                "\"near_checks\": [0-9]+" "\"bisection_steps\": [0-9]+" "\"node_pairs\": [0-9]+"
+                "\"f_evaluations\": [0-9]+" "\"query_us\": [0-9.e+-]+" "\"motion\": \"linear\"")
+  if(CASE STREQUAL "contact_time_json")
+    # B from x = 4 to x = -4 through A at rest: the unit spheres touch when their centres are 2
+    # apart, at t = 0.25 (a path of length 8: one spacing is 0.01 of time). The contact point is
+    # near (1, 0, 0), the normal (the way B leaves A) near +x.
+    pccd_run(OK ARGS contact-time sphere.xyz sphere.xyz --from-b ${x_4} --to-b ${x_m4} --json MATCH ${ct_fields}
+             "\"from_a\": \\[\n +1\\.0,")
+    file(WRITE ${WORK}/contact_time.json "${PCCD_STDOUT}")
+    pccd_json_number(t "${PCCD_STDOUT}" t)
+    pccd_json_number(t_low "${PCCD_STDOUT}" t_low)
+    pccd_json_number(t_high "${PCCD_STDOUT}" t_high)
+    pccd_expect_between(${t} 0.235 0.265 "the contact time of unit spheres meeting at t = 0.25")
+    pccd_expect_between(${t_low} 0.2 ${t} "t_low")
+    pccd_expect_between(${t_high} ${t} ${t} "t_high")
+    string(JSON point_x GET "${PCCD_STDOUT}" point 0)
+    string(JSON normal_x GET "${PCCD_STDOUT}" normal 0)
+    pccd_expect_between(${point_x} 0.9 1.1 "the contact point's x")
+    pccd_expect_between(${normal_x} 0.9 1.0 "the contact normal's x")
+    pccd_contact_time_reference(json sphere.xyz sphere.xyz contact_time.json --from-b ${x_4_csv} --to-b ${x_m4_csv})
+    # The torus (outer radius 1) turning a quarter about z while the sphere comes in along -x and
+    # A's centre of the linear motion is off its origin: the C++ answer, whatever the time.
+    pccd_run(OK ARGS contact-time torus.ply sphere.xyz --from-a 1 0 0 0 0 1 0 0 0 0 1 0 --to-a 0 -1 0 0.2 1 0 0 0 0 0 1 0
+             --centre-a 0.1,0,0 --from-b ${x_4} --to-b ${x_m4} --seed 9 --json MATCH ${ct_fields})
+    file(WRITE ${WORK}/contact_time_torus.json "${PCCD_STDOUT}")
+    pccd_json_number(t "${PCCD_STDOUT}" t)
+    pccd_expect_between(${t} 0.2 0.3 "the sphere reaching the turning torus")
+    pccd_contact_time_reference(json torus.ply sphere.xyz contact_time_torus.json --to-a 0,-1,0,0.2,1,0,0,0,0,0,1,0
+                                --centre-a 0.1,0,0 --from-b ${x_4_csv} --to-b ${x_m4_csv} --seed 9)
+  elseif(CASE STREQUAL "contact_time_text")
+    pccd_run(OK ARGS contact-time sphere.xyz torus.ply --from-b ${x_4} --to-b ${x_m4}
+             STDOUT_MATCH "A: sphere.xyz, 2000 points" "B: torus.ply, 2000 points" "motion linear, tolerance 0, seed 24301"
+                          "\nstatus: contact\n" "\nt: 0\\.2[3-6][0-9]*\n" "\nt_low: 0\\.2[0-9]*\n" "\nt_high: 0\\.2[0-9]*\n"
+                          "\npoint: .[-0-9.e]+, [-0-9.e]+, [-0-9.e]+.\n" "\nnormal: ."
+                          "\ncounters: advancement_steps [0-9]+ near_checks [0-9]+ bisection_steps [0-9]+ node_pairs [0-9]+ f_evaluations [0-9]+\n"
+                          "\nquery_us: [0-9.]+\n")
+    # Passing at a gap of 0.5: no contact, t and t_high nan, t_low 1.
+    pccd_run(OK ARGS contact-time sphere.xyz sphere.xyz --from-b 1 0 0 4 0 1 0 2.5 0 0 1 0 --to-b 1 0 0 -4 0 1 0 2.5 0 0 1 0
+             STDOUT_MATCH "B: the same object as A" "\nstatus: no_contact\n" "\nt: nan\n" "\nt_low: 1\n" "\nt_high: nan\n"
+                          "\npoint: none\n" "\nnormal: none\n")
+    # A budget of one step: undecided, where it got (t_low 0) and nothing else.
+    pccd_run(OK ARGS contact-time sphere.xyz sphere.xyz --from-b ${x_4} --to-b ${x_m4} --max-steps 1 --json
+             MATCH "\"status\": \"undecided\"" "\"t\": null" "\"t_low\": 0" "\"t_high\": null" "\"point\": null"
+                   "\"max_steps\": 1")
+    file(WRITE ${WORK}/contact_time_undecided.json "${PCCD_STDOUT}")
+    pccd_contact_time_reference(json sphere.xyz sphere.xyz contact_time_undecided.json --from-b ${x_4_csv} --to-b ${x_m4_csv}
+                                --max-steps 1)
+  elseif(CASE STREQUAL "contact_time_screw")
+    # B screws a quarter turn about z from (3, 0, 0) to (0, 3, 0) towards A resting at (0, 3, 0):
+    # the centres are 2 apart when the angle is 2 asin(1/3), at t = asin(7/9) / (pi / 2) = 0.5672
+    # (B's centre runs 3 pi / 2 = 4.7 along its arc: a spacing is 0.02 of time).
+    set(at_y3 1 0 0 0 0 1 0 3 0 0 1 0)
+    string(REPLACE ";" "," at_y3_csv "${at_y3}")
+    pccd_run(OK ARGS contact-time sphere.xyz sphere.xyz --motion screw --from-a ${at_y3} --to-a ${at_y3}
+             --from-b 1 0 0 3 0 1 0 0 0 0 1 0 --to-b 0 -1 0 0 1 0 0 3 0 0 1 0 --json
+             MATCH "\"status\": \"contact\"" "\"motion\": \"screw\"" "\"centre_a\": null")
+    file(WRITE ${WORK}/contact_time_screw.json "${PCCD_STDOUT}")
+    pccd_json_number(t "${PCCD_STDOUT}" t)
+    pccd_expect_between(${t} 0.547 0.587 "the contact time of the screwed sphere")
+    pccd_contact_time_reference(json sphere.xyz sphere.xyz contact_time_screw.json --motion screw --from-a ${at_y3_csv}
+                                --to-a ${at_y3_csv} --from-b 1,0,0,3,0,1,0,0,0,0,1,0 --to-b 0,-1,0,0,1,0,0,3,0,0,1,0)
+    # The same end poses moved linearly: B's centre cuts the corner and meets A earlier (the
+    # straight path from (3, 0, 0) to (0, 3, 0) comes within 2 of (0, 3, 0) at t = 0.5286).
+    pccd_run(OK ARGS contact-time sphere.xyz sphere.xyz --from-a ${at_y3} --to-a ${at_y3}
+             --from-b 1 0 0 3 0 1 0 0 0 0 1 0 --to-b 0 -1 0 0 1 0 0 3 0 0 1 0 --json MATCH "\"status\": \"contact\"")
+    pccd_json_number(t "${PCCD_STDOUT}" t)
+    pccd_expect_between(${t} 0.508 0.548 "the contact time of the linearly moved sphere")
+  elseif(CASE STREQUAL "contact_time_tolerance")
+    # --tolerance 0.4: contact when the gap closes to 0.4, at t = (4 - 2.4) / 8 = 0.2; passing at
+    # a gap of 0.5 is no contact for 0.4 but contact for 0.6.
+    pccd_run(OK ARGS contact-time sphere.xyz sphere.xyz --from-b ${x_4} --to-b ${x_m4} --tolerance 0.4 --json
+             MATCH "\"status\": \"contact\"" "\"tolerance\": 0.4")
+    file(WRITE ${WORK}/contact_time_tolerance.json "${PCCD_STDOUT}")
+    pccd_json_number(t "${PCCD_STDOUT}" t)
+    pccd_expect_between(${t} 0.185 0.215 "the contact time with --tolerance 0.4")
+    pccd_contact_time_reference(json sphere.xyz sphere.xyz contact_time_tolerance.json --from-b ${x_4_csv} --to-b ${x_m4_csv}
+                                --tolerance 0.4)
+    set(past_from 1 0 0 4 0 1 0 2.5 0 0 1 0)
+    set(past_to 1 0 0 -4 0 1 0 2.5 0 0 1 0)
+    pccd_run(OK ARGS contact-time sphere.xyz sphere.xyz --from-b ${past_from} --to-b ${past_to} --tolerance 0.4 --json
+             MATCH "\"status\": \"no_contact\"" "\"t\": null" "\"t_low\": 1")
+    pccd_run(OK ARGS contact-time sphere.xyz sphere.xyz --from-b ${past_from} --to-b ${past_to} --tolerance 0.6
+             --time-accuracy 0.001 --near-step 0.25 --json
+             MATCH "\"status\": \"contact\"" "\"time_accuracy\": 0.001" "\"near_step\": 0.25")
+    file(WRITE ${WORK}/contact_time_graze.json "${PCCD_STDOUT}")
+    pccd_contact_time_reference(json sphere.xyz sphere.xyz contact_time_graze.json --from-b 1,0,0,4,0,1,0,2.5,0,0,1,0
+                                --to-b 1,0,0,-4,0,1,0,2.5,0,0,1,0 --tolerance 0.6 --time-accuracy 0.001 --near-step 0.25)
+  elseif(CASE STREQUAL "contact_time_cases")
+    # Rows of 48 numbers (A at 0, A at 1, B at 0, B at 1): a header, a comment, a blank line; the
+    # sphere through the torus (contact near t = 0.25), passing it at y = 2.5 (no contact), and
+    # starting inside it (contact at t = 0).
+    set(id "1,0,0,0,0,1,0,0,0,0,1,0")
+    set(rows "${id},${id},${x_4_csv},${x_m4_csv}
+${id},${id},1,0,0,4,0,1,0,2.5,0,0,1,0,1,0,0,-4,0,1,0,2.5,0,0,1,0
+${id},${id},1,0,0,0.5,0,1,0,0,0,0,1,0,1,0,0,5,0,1,0,0,0,0,1,0
+")
+    file(WRITE ${WORK}/contact_time_cases.csv "a_from,...\n# three motions\n\n${rows}")
+    pccd_run(OK ARGS contact-time sphere.xyz torus.ply --cases contact_time_cases.csv
+             STDOUT_MATCH "^case,status,t,t_low,t_high,query_us\n1,contact,0\\.2[3-6][0-9]*,0\\.2[0-9]*,0\\.2[0-9]*,[0-9.]+\n2,no_contact,nan,1,nan,[0-9.]+\n3,contact,0,0,0,[0-9.]+\n$"
+             MATCH "3 cases")
+    file(WRITE ${WORK}/contact_time_cases_out.csv "${PCCD_STDOUT}")
+    file(WRITE ${WORK}/contact_time_cases_plain.csv "header\n${rows}")
+    pccd_contact_time_reference(cases sphere.xyz torus.ply contact_time_cases_plain.csv contact_time_cases_out.csv)
+    # Screw motions over the same rows: the C++ answer too.
+    pccd_run(OK ARGS contact-time sphere.xyz torus.ply --cases contact_time_cases.csv --motion screw --seed 3)
+    file(WRITE ${WORK}/contact_time_cases_screw.csv "${PCCD_STDOUT}")
+    pccd_contact_time_reference(cases sphere.xyz torus.ply contact_time_cases_plain.csv contact_time_cases_screw.csv
+                                --motion screw --seed 3)
+    # Bad rows stop the command before any query, naming the file and line.
+    file(WRITE ${WORK}/contact_time_short_row.csv "${id},${id},${id}\n")
+    pccd_run(FAIL ARGS contact-time sphere.xyz sphere.xyz --cases contact_time_short_row.csv
+             MATCH "pccd: error: contact_time_short_row.csv:1: expected 48 numbers .*got 36 fields" NO_MATCH "case,status")
+    file(WRITE ${WORK}/contact_time_bad_row.csv "${id},${id},${id},1,0,0,nan,0,1,0,0,0,0,1,0\n")
+    pccd_run(FAIL ARGS contact-time sphere.xyz sphere.xyz --cases contact_time_bad_row.csv
+             MATCH "pccd: error: contact_time_bad_row.csv:1: B at t = 1: rigid transform: translation entry \\(0, 3\\) is nan"
+             NO_MATCH "case,status")
+  elseif(CASE STREQUAL "contact_time_png")
+    file(REMOVE "${WORK}/contact_time.png" "${WORK}/contact_time_start.png")
+    pccd_run(OK ARGS contact-time sphere.xyz torus.ply --from-b ${x_4} --to-b ${x_m4} --png contact_time.png
+             MATCH "status: contact" "wrote [^\n]*contact_time.png: A blue, B gold at t = 0\\.2[0-9]*, their paths darker, the contact point red")
+    pccd_check_png(contact_time.png 800 600)
+    pccd_run(OK ARGS contact-time sphere.xyz torus.ply --from-b ${x_4} --to-b ${x_m4} --png contact_time_start.png
+             --png-time 0 --json MATCH "\"png_time\": 0(\\.0)?\n")
+    pccd_check_png(contact_time_start.png 800 600)
+  elseif(CASE STREQUAL "contact_time_bad_arguments")
+    # Each refused before any preprocessing with "pccd: error: " and the option's name; never a
+    # crash. The last, a motion too fast for any bound, is refused by the library's check.
+    set(s sphere.xyz sphere.xyz)
+    pccd_run(FAIL ARGS contact-time ${s} --motion spin MATCH "pccd: error: --motion must be linear or screw, not \"spin\"")
+    pccd_run(FAIL ARGS contact-time ${s} --motion screw --centre-b 0,0,0
+             MATCH "pccd: error: --centre-b applies to --motion linear only")
+    pccd_run(FAIL ARGS contact-time ${s} --centre-a 1,2 MATCH "pccd: error: --centre-a expects 3 numbers")
+    pccd_run(FAIL ARGS contact-time ${s} --centre-b nan,0,0 MATCH "pccd: error: --centre-b: \"nan\" is not a finite number")
+    pccd_run(FAIL ARGS contact-time ${s} --tolerance -1 MATCH "pccd: error: --tolerance -1: must be >= 0")
+    pccd_run(FAIL ARGS contact-time ${s} --tolerance inf MATCH "pccd: error: --tolerance: \"inf\" is not a finite number")
+    pccd_run(FAIL ARGS contact-time ${s} --time-accuracy 0 MATCH "pccd: error: --time-accuracy 0: must be > 0")
+    pccd_run(FAIL ARGS contact-time ${s} --near-step 5 MATCH "pccd: error: --near-step 5: must be in \\(0, 4\\]")
+    pccd_run(FAIL ARGS contact-time ${s} --max-steps 0 MATCH "pccd: error: --max-steps 0: must be >= 1")
+    pccd_run(FAIL ARGS contact-time ${s} --from-b 1 0 0 nan 0 1 0 0 0 0 1 0
+             MATCH "pccd: error: --from-b: rigid transform: translation entry \\(0, 3\\) is nan")
+    pccd_run(FAIL ARGS contact-time ${s} --to-a 2 0 0 0 0 1 0 0 0 0 1 0
+             MATCH "pccd: error: --to-a: rigid transform: the rotation part scales")
+    pccd_run(FAIL ARGS contact-time ${s} --to-b 1 0 0 0 0 1 0 0 0 0 -1 0
+             MATCH "pccd: error: --to-b: rigid transform: the rotation part is a reflection")
+    pccd_run(FAIL ARGS contact-time ${s} --from-a 1 0 0 MATCH "pccd: error: --from-a expects 12 numbers")
+    pccd_run(FAIL ARGS contact-time ${s} --png x.png --png-time 1.5
+             MATCH "pccd: error: --png-time 1.5: the time must be in \\[0, 1\\]")
+    pccd_run(FAIL ARGS contact-time ${s} --png x.png --png-time -0.25
+             MATCH "pccd: error: --png-time -0.25: the time must be in \\[0, 1\\]")
+    pccd_run(FAIL ARGS contact-time ${s} --png x.png --png-time nan MATCH "pccd: error: --png-time: \"nan\" is not a finite number")
+    pccd_run(FAIL ARGS contact-time ${s} --png-time 0.5 MATCH "--png-time requires --png")
+    pccd_run(FAIL ARGS contact-time ${s} --cases contact_time_cases.csv --json MATCH "excludes")
+    pccd_run(FAIL ARGS contact-time ${s} --cases no_such_cases.csv MATCH "no_such_cases.csv: .*missing file")
+    pccd_run(FAIL ARGS contact-time ${s} --from-b 1 0 0 -1e308 0 1 0 0 0 0 1 0 --to-b 1 0 0 1e308 0 1 0 0 0 0 1 0
+             MATCH "pccd: error: time_of_contact: the motions' speed bound inf is not finite")
+  else()
+    message(FATAL_ERROR "unknown CASE '${CASE}'")
+  endif()
 elseif(CASE STREQUAL "progress_not_a_terminal")
   # stderr is a pipe here: the preprocessing progress stays off, stderr stays empty.
   pccd_run(OK ARGS info sphere.xyz STDERR_EMPTY)

@@ -1,5 +1,5 @@
 """Docs that cannot drift: every ```python block of doc/manual/python.md, of the Python section of
-doc/manual/proximity-cli-python.md, of doc/manual/world.md and of README.md runs, in order, as one session per document,
+doc/manual/proximity-cli-python.md, of doc/manual/world.md, of doc/manual/continuous.md and of README.md runs, in order, as one session per document,
 in a scratch directory holding libcgal-demo's bunny00.off and elephant.off (the files the blocks
 read); a ```text block right after a ```python block is that block's output, compared line by
 line. The quickstart's output shown in the manual is the
@@ -73,7 +73,7 @@ def have_open3d():
 
 
 @pytest.mark.parametrize("document", ["doc/manual/python.md", "doc/manual/proximity-cli-python.md",
-                                      "doc/manual/world.md", "README.md"])
+                                      "doc/manual/world.md", "doc/manual/continuous.md", "README.md"])
 def test_every_python_block_runs_and_prints_what_the_document_shows(source_dir, scratch, document):
     found = [b for b in blocks((source_dir / document).read_text()) if b[0] == "python"]
     assert found, f"{document} has no python block"

@@ -1,7 +1,7 @@
 """examples/python/dask_many_pairs.py on a LocalCluster of 2 worker processes: its results,
 gathered from the workers, equal one pccd.do_intersect_many (intersection_points_many) call over
 the same pairs, bit for bit; examples/python/proximity.py prints the exact gaps and depths of its
-two spheres."""
+two spheres; examples/python/contact_time.py the exact first contact times of its spheres."""
 
 import os
 import subprocess
@@ -81,3 +81,23 @@ def test_proximity_example_prints_the_exact_gaps_and_depths(source_dir):
     assert separate == 4 and intersecting == 2
     assert "2 threads, the same answers as the single calls" in done.stdout
     assert "contacts at x = 0.75: intersecting" in done.stdout
+
+
+def test_contact_time_example_prints_the_exact_contact_times(source_dir):
+    """examples/python/contact_time.py: its contact times are the exact ones within a spacing of the
+    path (0.012 of time), the pass at a gap is no contact, the batch equals the single calls, and
+    the discrete poses miss the grazing contact that time_of_contact finds."""
+    script = source_dir / "examples" / "python" / "contact_time.py"
+    done = subprocess.run([sys.executable, str(script), "--threads", "2"], capture_output=True, text=True,
+                          timeout=600)
+    assert done.returncode == 0, done.stdout + done.stderr
+    rows = [line.split() for line in done.stdout.splitlines() if line[:4].strip().replace(".", "").isdigit()]
+    assert len(rows) == 4, done.stdout
+    for row in rows:
+        if float(row[0]) < 2:
+            assert row[1] == "contact", row
+            assert abs(float(row[2]) - float(row[3])) <= 0.012, row
+        else:
+            assert row[1] == "no_contact", row
+    assert "the same answers as the single calls" in done.stdout
+    assert "6 discrete poses see contact 0 times; time_of_contact: contact" in done.stdout
