@@ -55,7 +55,9 @@ public:
     }
 
     /// Node pairs of an advancement step's walk (see lower_bound()).
-    static inline std::size_t walk_budget = 64;
+    /// (Measured on the bunny: budgets of 16, 64 and 256 cost within 20 % of each other, an unlimited
+    /// walk 20 % more.)
+    static constexpr std::size_t walk_budget = 64;
 
     double speed() const { return m_speed; }
     double accuracy() const { return m_accuracy; }
