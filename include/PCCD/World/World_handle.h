@@ -42,6 +42,9 @@ constexpr bool may_collide(const Collision_filter& a, const Collision_filter& b)
 
 } // namespace PCCD
 
+/// \cond
+// World_handle as a key of unordered containers (hidden from Doxygen, which cannot place a
+// specialization of std::hash).
 template <>
 struct std::hash<PCCD::World_handle> {
     std::size_t operator()(const PCCD::World_handle& h) const noexcept
@@ -49,3 +52,4 @@ struct std::hash<PCCD::World_handle> {
         return std::hash<std::uint64_t>()((std::uint64_t(h.generation) << 32) | h.index);
     }
 };
+/// \endcond
