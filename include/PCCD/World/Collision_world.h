@@ -25,6 +25,7 @@
 #include <Eigen/Geometry>
 
 #include <PCCD/Error.h>
+#include <PCCD/internal/keep_going.h>
 #include <PCCD/Intersection/Interpolation_search.h>
 #include <PCCD/Intersection/Intersection_options.h>
 #include <PCCD/Intersection/Intersection_result.h>
@@ -295,7 +296,7 @@ public:
                 const World_pair p{World_handle{c.a, m_slots[c.a].generation}, World_handle{c.b, m_slots[c.b].generation},
                                    e.status, e.point};
                 ++m_counters.reported_pairs;
-                if (!call(f, p)) stopped = true;
+                if (!internal::keep_going(f, p)) stopped = true;
             }
             begin = end;
         }
@@ -338,7 +339,7 @@ public:
             },
             [&](std::size_t t, const Cache_entry& e) {
                 if (e.status == Intersection_status::separate) return true;
-                return call(f, World_hit{World_handle{others[t], m_slots[others[t]].generation}, e.status, e.point});
+                return internal::keep_going(f, World_hit{World_handle{others[t], m_slots[others[t]].generation}, e.status, e.point});
             });
     }
 
@@ -377,7 +378,7 @@ public:
                 return World_hit{World_handle{others[t], o.generation}, r.status, first_point(r)};
             },
             [&](std::size_t, const World_hit& hit) {
-                return hit.status == Intersection_status::separate ? true : call(f, hit);
+                return hit.status == Intersection_status::separate ? true : internal::keep_going(f, hit);
             });
     }
 
@@ -457,7 +458,7 @@ public:
                 return char(has_point_in(*o.object, o.pose, box));
             },
             [&](std::size_t t, char inside) {
-                return inside ? call(f, World_handle{candidates[t], m_slots[candidates[t]].generation}) : true;
+                return inside ? internal::keep_going(f, World_handle{candidates[t], m_slots[candidates[t]].generation}) : true;
             });
     }
 
@@ -511,7 +512,7 @@ public:
             queue.pop();
             const Slot& s = m_slots[e.index];
             if (e.evaluated) {
-                if (!call(f, World_ray_hit{World_handle{e.index, s.generation}, e.hit})) return;
+                if (!internal::keep_going(f, World_ray_hit{World_handle{e.index, s.generation}, e.hit})) return;
                 continue;
             }
             const Ray_hit hit = ray_intersection(*s.object, s.pose, origin, direction, t_max, options);
@@ -563,17 +564,6 @@ private:
         Eigen::Vector3d point = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
         Intersection_status status = Intersection_status::separate;
     };
-
-    template <class F, class... Args>
-    static bool call(F& f, const Args&... args)
-    {
-        if constexpr (std::is_same_v<decltype(f(args...)), void>) {
-            f(args...);
-            return true;
-        } else {
-            return bool(f(args...));
-        }
-    }
 
     static Eigen::Vector3d first_point(const Intersection_result& r)
     {
@@ -694,7 +684,7 @@ private:
                 return World_proximity{World_handle{others[t], o.generation},
                                        PCCD::within_distance(query, pose, *o.object, o.pose, margin, m_options.distance)};
             },
-            [&](std::size_t, const World_proximity& w) { return w.clearance.within ? call(f, w) : true; });
+            [&](std::size_t, const World_proximity& w) { return w.clearance.within ? internal::keep_going(f, w) : true; });
     }
 
     /// Computes `compute(t)` for t in [0, n) in parallel blocks and hands each answer to

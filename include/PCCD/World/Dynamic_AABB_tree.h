@@ -21,6 +21,7 @@
 #include <Eigen/Geometry>
 
 #include <PCCD/Error.h>
+#include <PCCD/internal/keep_going.h>
 
 namespace PCCD {
 
@@ -148,7 +149,7 @@ public:
             const Node& nb = m_nodes[b];
             if (!na.box.intersects(nb.box)) continue;
             if (na.is_leaf() && nb.is_leaf()) {
-                if (!call(f, na.id, nb.id)) return;
+                if (!internal::keep_going(f, na.id, nb.id)) return;
                 continue;
             }
             // Descend the larger inner node (a leaf is never split).
@@ -173,7 +174,7 @@ public:
             stack.pop_back();
             if (!n.box.intersects(box)) continue;
             if (n.is_leaf()) {
-                if (!call(f, n.id)) return;
+                if (!internal::keep_going(f, n.id)) return;
                 continue;
             }
             stack.push_back(n.right);
@@ -199,7 +200,7 @@ public:
             double t_enter = 0.0;
             if (!crosses(n.box, origin, direction, t_max, t_enter)) continue;
             if (n.is_leaf()) {
-                if (!call(f, n.id, t_enter)) return;
+                if (!internal::keep_going(f, n.id, t_enter)) return;
                 continue;
             }
             stack.push_back(n.right);
@@ -267,17 +268,6 @@ private:
 
         bool is_leaf() const { return left == null; }
     };
-
-    template <class F, class... Args>
-    static bool call(F& f, Args... args)
-    {
-        if constexpr (std::is_same_v<decltype(f(args...)), void>) {
-            f(args...);
-            return true;
-        } else {
-            return bool(f(args...));
-        }
-    }
 
     static double area(const Box& b)
     {
