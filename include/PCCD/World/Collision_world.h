@@ -132,6 +132,7 @@ public:
         s.stamp = ++m_stamp;
         s.alive = true;
         s.proxy = m_tree.insert(s.box, index);
+        mark_dirty(index);
         ++m_size;
         return World_handle{index, s.generation};
     }
@@ -144,6 +145,7 @@ public:
         s.box = world_box(*s.object, pose, m_options.box_depth);
         s.stamp = ++m_stamp;
         m_tree.update(s.proxy, s.box);
+        mark_dirty(h.index);
     }
 
     /// set_pose() for each handle with the pose of the same index. All handles are checked before
@@ -169,8 +171,11 @@ public:
                 ++it;
         }
         const std::uint32_t generation = s.generation + 1;
+        const bool dirty = s.dirty; // m_dirty lists each slot once
         s = Slot{};
         s.generation = generation;
+        s.dirty = dirty;
+        mark_dirty(h.index);
         m_free.push_back(h.index);
         --m_size;
     }
@@ -203,7 +208,11 @@ public:
     const Box& box(World_handle h) const { return slot(h, "Collision_world::box").box; }
     const Collision_filter& filter(World_handle h) const { return slot(h, "Collision_world::filter").filter; }
 
-    void set_filter(World_handle h, const Collision_filter& filter) { slot(h, "Collision_world::set_filter").filter = filter; }
+    void set_filter(World_handle h, const Collision_filter& filter)
+    {
+        slot(h, "Collision_world::set_filter").filter = filter;
+        mark_dirty(h.index);
+    }
 
     /// Never test the pair (a, b) (e.g. two parts bolted together); erased with either instance.
     /// \throws Invalid_input for stale handles or a == b.
@@ -211,12 +220,16 @@ public:
     {
         check_pair(a, b, "Collision_world::exclude_pair");
         m_excluded.insert(world_pair_key(a.index, b.index));
+        mark_dirty(a.index);
+        mark_dirty(b.index);
     }
     /// Tests the pair (a, b) again. \throws Invalid_input for stale handles or a == b.
     void include_pair(World_handle a, World_handle b)
     {
         check_pair(a, b, "Collision_world::include_pair");
         m_excluded.erase(world_pair_key(a.index, b.index));
+        mark_dirty(a.index);
+        mark_dirty(b.index);
     }
     bool excluded(World_handle a, World_handle b) const
     {
@@ -255,51 +268,56 @@ public:
         const std::vector<Candidate> candidates = candidate_pairs();
         ++m_epoch;
         // Chunks of candidates holding up to `block` pairs the cache cannot answer: those are
-        // computed (in parallel) before `f` sees the chunk's pairs, so an early stop wastes at most
-        // one block of narrow-phase queries, and a step in which few instances moved runs one
-        // parallel loop per `block` queries, not per `block` candidates.
-        const std::size_t block = std::max<std::size_t>(64, 16 * worker_count());
+        // computed (in parallel) before `f` sees the chunk's pairs. A callback that can stop the
+        // query (returns bool) gets chunks that double, so an early stop wastes at most as many
+        // narrow-phase queries as were already answered; one that cannot (returns void, as
+        // intersecting_pairs()' own) gets a single chunk: one parallel loop for the whole step.
+        constexpr bool can_stop = !std::is_void_v<std::invoke_result_t<F&, const World_pair&>>;
+        std::size_t block = can_stop ? first_block() : candidates.size();
         bool stopped = false;
         std::vector<Cache_entry> answers;
         std::vector<std::size_t> todo;
         std::vector<Cache_entry> computed;
-        for (std::size_t begin = 0; begin < candidates.size() && !stopped;) {
-            answers.clear();
-            todo.clear();
-            std::size_t end = begin;
-            for (; end < candidates.size() && todo.size() < block; ++end) {
-                const Candidate& c = candidates[end];
-                if (m_options.cache_results) {
-                    const auto it = m_cache.find(c.key);
-                    if (it != m_cache.end() && it->second.stamp_a == m_slots[c.a].stamp &&
-                        it->second.stamp_b == m_slots[c.b].stamp) {
-                        it->second.epoch = m_epoch;
-                        answers.push_back(it->second);
-                        ++m_counters.cached_pairs;
-                        continue;
+        in_arena([&] {
+            for (std::size_t begin = 0; begin < candidates.size() && !stopped;) {
+                answers.clear();
+                todo.clear();
+                std::size_t end = begin;
+                for (; end < candidates.size() && todo.size() < block; ++end) {
+                    const Candidate& c = candidates[end];
+                    if (m_options.cache_results) {
+                        const auto it = m_cache.find(c.key);
+                        if (it != m_cache.end() && it->second.stamp_a == m_slots[c.a].stamp &&
+                            it->second.stamp_b == m_slots[c.b].stamp) {
+                            it->second.epoch = m_epoch;
+                            answers.push_back(it->second);
+                            ++m_counters.cached_pairs;
+                            continue;
+                        }
                     }
+                    todo.push_back(end);
+                    answers.emplace_back();
                 }
-                todo.push_back(end);
-                answers.emplace_back();
+                m_counters.narrow_phase_queries += todo.size();
+                computed.assign(todo.size(), Cache_entry{});
+                parallel_here(todo.size(), [&](std::size_t t) { computed[t] = answer(candidates[todo[t]]); });
+                for (std::size_t t = 0; t < todo.size(); ++t) {
+                    answers[todo[t] - begin] = computed[t];
+                    if (m_options.cache_results) m_cache[candidates[todo[t]].key] = computed[t];
+                }
+                for (std::size_t i = begin; i < end && !stopped; ++i) {
+                    const Cache_entry& e = answers[i - begin];
+                    if (e.status == Intersection_status::separate) continue;
+                    const Candidate& c = candidates[i];
+                    const World_pair p{World_handle{c.a, m_slots[c.a].generation},
+                                       World_handle{c.b, m_slots[c.b].generation}, e.status, e.point};
+                    ++m_counters.reported_pairs;
+                    if (!internal::keep_going(f, p)) stopped = true;
+                }
+                begin = end;
+                if constexpr (can_stop) block = std::max(block, m_counters.narrow_phase_queries);
             }
-            m_counters.narrow_phase_queries += todo.size();
-            computed.assign(todo.size(), Cache_entry{});
-            run_parallel(todo.size(), [&](std::size_t t) { computed[t] = answer(candidates[todo[t]]); });
-            for (std::size_t t = 0; t < todo.size(); ++t) {
-                answers[todo[t] - begin] = computed[t];
-                if (m_options.cache_results) m_cache[candidates[todo[t]].key] = computed[t];
-            }
-            for (std::size_t i = begin; i < end && !stopped; ++i) {
-                const Cache_entry& e = answers[i - begin];
-                if (e.status == Intersection_status::separate) continue;
-                const Candidate& c = candidates[i];
-                const World_pair p{World_handle{c.a, m_slots[c.a].generation}, World_handle{c.b, m_slots[c.b].generation},
-                                   e.status, e.point};
-                ++m_counters.reported_pairs;
-                if (!internal::keep_going(f, p)) stopped = true;
-            }
-            begin = end;
-        }
+        });
         // Forget the answers of pairs that are no longer candidates (after a complete pass only).
         if (!stopped && m_options.cache_results)
             std::erase_if(m_cache, [&](const auto& item) { return item.second.epoch != m_epoch; });
@@ -528,13 +546,14 @@ public:
     /// \name Broad phase and memory
     /// @{
     const Dynamic_AABB_tree& broad_phase() const { return m_tree; }
-    /// Bytes the world holds besides the objects themselves: instance slots, tree nodes, the result
-    /// cache and the excluded pairs (allocated capacity; hash-table nodes counted as key, value and
-    /// two pointers).
+    /// Bytes the world holds besides the objects themselves: instance slots, tree nodes, the last
+    /// candidate pairs, the result cache and the excluded pairs (allocated capacity; hash-table
+    /// nodes counted as key, value and two pointers).
     std::size_t memory_bytes() const
     {
         const std::size_t node_overhead = 2 * sizeof(void*);
         return sizeof(*this) + m_slots.capacity() * sizeof(Slot) + m_free.capacity() * sizeof(std::uint32_t) +
+               m_dirty.capacity() * sizeof(std::uint32_t) + m_candidates.capacity() * sizeof(Candidate) +
                m_tree.memory_bytes() + m_cache.bucket_count() * sizeof(void*) +
                m_cache.size() * (sizeof(std::pair<const std::uint64_t, Cache_entry>) + node_overhead) +
                m_excluded.bucket_count() * sizeof(void*) + m_excluded.size() * (sizeof(std::uint64_t) + node_overhead);
@@ -551,6 +570,7 @@ private:
         Dynamic_AABB_tree::Proxy proxy = Dynamic_AABB_tree::no_proxy;
         std::uint32_t generation = 0;
         bool alive = false;
+        bool dirty = false; // moved, inserted, erased or refiltered since the last candidate_pairs()
     };
     struct Candidate {
         std::uint32_t a; // a < b
@@ -609,44 +629,94 @@ private:
         return m_options.threads ? std::size_t(*m_options.threads) : std::size_t(2);
     }
 
-    /// Calls body(t) for t in [0, n) on the options' threads.
+    /// The first chunk of parallel queries of a query that may stop early.
+    std::size_t first_block() const { return std::max<std::size_t>(64, 16 * worker_count()); }
+
+    /// Runs `body()` with the options' threads available to parallel_here(): in one task arena of
+    /// that many threads (none for one thread), so that a query entering several parallel loops
+    /// pays for its arena once.
     template <class Body>
-    void run_parallel(std::size_t n, const Body& body) const
+    void in_arena(const Body& body) const
+    {
+        if (worker_count() == 1)
+            body();
+        else
+            internal::with_threads(m_options.threads, body);
+    }
+
+    /// Calls body(t) for t in [0, n), in parallel unless one thread is asked for; call it inside
+    /// in_arena(). The exception of the lowest t is rethrown after all have run.
+    template <class Body>
+    void parallel_here(std::size_t n, const Body& body) const
     {
         if (n == 0) return;
-        if (n == 1 || worker_count() == 1) { // no task arena for one worker
+        if (n == 1 || worker_count() == 1) {
             for (std::size_t t = 0; t < n; ++t) body(t);
             return;
         }
         std::vector<std::exception_ptr> errors(n);
-        internal::with_threads(m_options.threads, [&] {
-            internal::parallel_for_ranges(n, 1, [&](std::size_t begin, std::size_t end) {
-                for (std::size_t t = begin; t < end; ++t) {
-                    try {
-                        body(t);
-                    } catch (...) {
-                        errors[t] = std::current_exception();
-                    }
+        internal::parallel_for_ranges(n, 1, [&](std::size_t begin, std::size_t end) {
+            for (std::size_t t = begin; t < end; ++t) {
+                try {
+                    body(t);
+                } catch (...) {
+                    errors[t] = std::current_exception();
                 }
-            });
+            }
         });
         for (const std::exception_ptr& e : errors)
             if (e) std::rethrow_exception(e);
     }
 
-    /// The pairs of instances the narrow phase must answer, sorted by key.
+    void mark_dirty(std::uint32_t index)
+    {
+        if (m_slots[index].dirty) return;
+        m_slots[index].dirty = true;
+        m_dirty.push_back(index);
+    }
+
+    /// Whether the pair (i, j) is a candidate: tight world boxes overlap and the filters allow it.
+    bool candidate(std::uint32_t i, std::uint32_t j)
+    {
+        ++m_counters.broad_phase_pairs;
+        if (!m_slots[i].box.intersects(m_slots[j].box) || !allowed(i, j)) {
+            ++m_counters.filtered_pairs;
+            return false;
+        }
+        return true;
+    }
+
+    /// The pairs of instances the narrow phase must answer, sorted by key: those whose tight world
+    /// boxes overlap and whose filters allow them. While few instances changed since the last call
+    /// (at most a quarter), the last call's candidates among unchanged instances are kept (their
+    /// boxes and filters are those that made them candidates) and only the changed instances' boxes
+    /// are looked up in the tree; otherwise the tree is walked against itself. Both give the same
+    /// pairs.
     std::vector<Candidate> candidate_pairs()
     {
         std::vector<Candidate> out;
-        m_tree.for_each_overlapping_pair([&](std::uint32_t i, std::uint32_t j) {
-            ++m_counters.broad_phase_pairs;
-            if (!m_slots[i].box.intersects(m_slots[j].box) || !allowed(i, j)) {
-                ++m_counters.filtered_pairs;
-                return;
+        if (m_candidates_valid && 4 * m_dirty.size() <= m_size) {
+            for (const Candidate& c : m_candidates)
+                if (!m_slots[c.a].dirty && !m_slots[c.b].dirty) out.push_back(c);
+            m_counters.broad_phase_pairs += out.size();
+            for (const std::uint32_t i : m_dirty) {
+                if (!m_slots[i].alive) continue;
+                m_tree.for_each_overlapping(m_slots[i].box, [&](std::uint32_t j) {
+                    // A pair of two changed instances is taken from the lower index's lookup.
+                    if (j == i || (m_slots[j].dirty && j < i) || !candidate(i, j)) return;
+                    out.push_back(Candidate{std::min(i, j), std::max(i, j), world_pair_key(i, j)});
+                });
             }
-            out.push_back(Candidate{std::min(i, j), std::max(i, j), world_pair_key(i, j)});
-        });
+        } else {
+            m_tree.for_each_overlapping_pair([&](std::uint32_t i, std::uint32_t j) {
+                if (candidate(i, j)) out.push_back(Candidate{std::min(i, j), std::max(i, j), world_pair_key(i, j)});
+            });
+        }
         std::sort(out.begin(), out.end(), [](const Candidate& x, const Candidate& y) { return x.key < y.key; });
+        for (const std::uint32_t i : m_dirty) m_slots[i].dirty = false;
+        m_dirty.clear();
+        m_candidates = out;
+        m_candidates_valid = true;
         return out;
     }
 
@@ -689,19 +759,24 @@ private:
 
     /// Computes `compute(t)` for t in [0, n) in parallel blocks and hands each answer to
     /// `consume(t, answer)` in index order on the calling thread, stopping when it returns false
-    /// (the blocks after it are not computed).
+    /// (the blocks after it are not computed). Blocks double (each as large as all before it), so a
+    /// stop wastes at most as many computations as were consumed, in few parallel loops.
     template <class Answer, class Compute, class Consume>
     void in_blocks(std::size_t n, const Compute& compute, const Consume& consume) const
     {
-        const std::size_t block = std::max<std::size_t>(64, 16 * worker_count());
+        std::size_t block = first_block();
         std::vector<Answer> answers;
-        for (std::size_t begin = 0; begin < n; begin += block) {
-            const std::size_t end = std::min(n, begin + block);
-            answers.assign(end - begin, Answer{});
-            run_parallel(end - begin, [&](std::size_t t) { answers[t] = compute(begin + t); });
-            for (std::size_t t = begin; t < end; ++t)
-                if (!consume(t, answers[t - begin])) return;
-        }
+        in_arena([&] {
+            for (std::size_t begin = 0; begin < n;) {
+                const std::size_t end = std::min(n, begin + block);
+                answers.assign(end - begin, Answer{});
+                parallel_here(end - begin, [&](std::size_t t) { answers[t] = compute(begin + t); });
+                for (std::size_t t = begin; t < end; ++t)
+                    if (!consume(t, answers[t - begin])) return;
+                begin = end;
+                block = std::max(block, end);
+            }
+        });
     }
 
     /// Whether a cloud point of `object` at `pose` lies in the world box `box`: a walk of its
@@ -742,6 +817,9 @@ private:
     std::uint64_t m_epoch = 0;
     std::unordered_map<std::uint64_t, Cache_entry> m_cache;
     std::unordered_set<std::uint64_t> m_excluded;
+    std::vector<std::uint32_t> m_dirty;      // the slots marked dirty, each once
+    std::vector<Candidate> m_candidates;     // the last candidate_pairs(), sorted by key
+    bool m_candidates_valid = false;
     World_counters m_counters;
 };
 
