@@ -522,9 +522,9 @@ details : bool, optional
     or 'undecided' (a budget of the options ran out; reported so that no contact is missed) and
     point the (3,) intersection point found (NaN when undecided).
 limit : int, optional
-    Stop after the first `limit` pairs (>= 1; the narrow phase then answers at most one more
-    block of candidate pairs): ``limit=1`` asks whether anything touches. None (default): every
-    pair.
+    Stop after the first `limit` pairs (>= 1; the narrow phase answers candidate pairs in chunks
+    that double, so it answers at most as many pairs beyond the stop as before it): ``limit=1``
+    asks whether anything touches. None (default): every pair, in one parallel loop.
 
 Returns
 -------
@@ -650,7 +650,7 @@ frame, boundary included), in increasing index order. ValueError for an empty or
                 const auto l = w.lock();
                 return w.world().memory_bytes();
             },
-            "int: bytes the world holds besides the objects (slots, tree, cache, excluded pairs).")
+            "int: bytes the world holds besides the objects (slots, tree, candidate pairs, cache, excluded pairs).")
         .def_property_readonly("seed", [](const World& w) { return w.world().options().intersection.seed; },
                                "int: the seed of the narrow phase (pair seeds derive from it).")
         .def_property_readonly("threads", [](const World& w) { return w.world().options().threads; },
