@@ -2,7 +2,8 @@
 // propagation over any ProximityGraph model (here a boost::adjacency_list k-NN graph built by brute
 // force), the outward choice per component, orientation like given normals, the bunny scan against
 // its mesh normals, and orientation with hints (some normals given, some missing) against analytic
-// sphere normals.
+// sphere normals; the agreement rule across thin parts (a plate thinner than the graph's edges,
+// analytic normals) and sparse area samples of scanned and CAD models against their mesh normals.
 #include "surface_test_helpers.h"
 
 #include <PCCD/IO/read_triangle_mesh.h>
@@ -10,12 +11,15 @@
 #include <PCCD/Proximity_graph/graph_components.h>
 #include <PCCD/Proximity_graph/sphere_of_influence_graph.h>
 #include <PCCD/Surface/orient_normals.h>
+#include <PCCD/Similarity_3.h>
+#include <PCCD/sample_triangle_mesh.h>
 
 #include <boost/graph/adjacency_list.hpp>
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -65,7 +69,98 @@ Eigen::Matrix3Xd scrambled(const Eigen::Matrix3Xd& normals)
     return out;
 }
 
+/// The fraction of the object's normals that point against `truth` (column input_index(i) for
+/// point i; points without a normal count as reversed).
+double reversed_fraction(const PCCD::Point_cloud_object<>& object, const Eigen::Matrix3Xd& truth)
+{
+    std::size_t reversed = 0;
+    for (std::size_t i = 0; i < object.size(); ++i)
+        if (!(object.normals().col(Eigen::Index(i)).dot(truth.col(Eigen::Index(object.input_index(i)))) > 0.0)) ++reversed;
+    return double(reversed) / double(object.size());
+}
+
+/// A closed box mesh with corner `lo` and sizes `size` (outward triangles).
+PCCD::Triangle_mesh_data box_mesh(const Eigen::Vector3d& lo, const Eigen::Vector3d& size)
+{
+    PCCD::Triangle_mesh_data m;
+    for (int k = 0; k < 8; ++k)
+        m.vertices.push_back(lo + Eigen::Vector3d((k & 1) ? size.x() : 0.0, (k & 2) ? size.y() : 0.0, (k & 4) ? size.z() : 0.0));
+    const std::array<std::array<unsigned, 4>, 6> faces{{{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}}};
+    for (const auto& f : faces) {
+        m.triangles.push_back({f[0], f[1], f[2]});
+        m.triangles.push_back({f[0], f[2], f[3]});
+    }
+    return m;
+}
+
 } // namespace
+
+TEST_CASE("orientation_agreement: normals mirrored across the edge's bisecting plane", "[surface]")
+{
+    const Eigen::Vector3d x = Eigen::Vector3d::UnitX(), z = Eigen::Vector3d::UnitZ();
+    // Within a flat surface (edge in the tangent plane): the plain dot product.
+    CHECK(PCCD::orientation_agreement(z, z, x) == Approx(1.0));
+    CHECK(PCCD::orientation_agreement(z, -z, x) == Approx(-1.0));
+    // Across a thin plate (edge along the normals): outward normals are opposite and agree.
+    CHECK(PCCD::orientation_agreement(z, -z, 0.01 * z) == Approx(1.0));
+    CHECK(PCCD::orientation_agreement(z, z, 0.01 * z) == Approx(-1.0));
+    // On a circle of radius 1 (centre at the origin): outward normals at angles 0 and 0.4 agree
+    // exactly, whatever the chord.
+    const Eigen::Vector3d p(1.0, 0.0, 0.0), q(std::cos(0.4), std::sin(0.4), 0.0);
+    CHECK(PCCD::orientation_agreement(p, q, q - p) == Approx(1.0));
+    CHECK(PCCD::orientation_agreement(p, -q, q - p) == Approx(-1.0));
+    // A zero-length edge: the dot product.
+    CHECK(PCCD::orientation_agreement(z, x, Eigen::Vector3d::Zero()) == Approx(0.0));
+}
+
+TEST_CASE("a closed plate a few spacings thick keeps its two faces facing outward", "[surface]")
+{
+    // A 2 x 2 box 0.08 thick (about 5 mean spacings of its 8,000-point area sample): the r-SIG
+    // joins the two large faces, whose outward normals are opposite. Truth: the box's face
+    // normals. Measured: the rule n_i . n_j of Hoppe et al. reverses one face (49 %) at this
+    // thickness and at every thickness below 7 spacings; the mirrored rule none. Plates of 3
+    // spacings or less defeat both (the edges across them are too oblique).
+    for (const double noise : {0.0, 0.1}) {
+        const PCCD::Triangle_mesh_data box = box_mesh(Eigen::Vector3d(-1, -1, 0), Eigen::Vector3d(2, 2, 0.08));
+        PCCD::Random_engine engine(5);
+        const auto sample = PCCD::sample_triangle_mesh(box.vertices, box.triangles, 8000, engine, {.noise_sigma = noise * 0.05});
+        const PCCD::Point_cloud_object<> object(sample.points);
+        const double reversed = reversed_fraction(object, sample.normals);
+        INFO("noise " << noise << " spacings: " << 100.0 * reversed << " % of the normals reversed");
+        CHECK(reversed <= 0.005);
+    }
+}
+
+TEST_CASE("sparse area samples of scanned and CAD models agree with their mesh normals", "[surface]")
+{
+    // 8,000 points by area, clean and with noise of 0.3 mean spacings, of three closed models with
+    // thin parts (the elephant's ears and trunk, the fandisk's fins, a part's walls); truth: the
+    // normal of the triangle each point was drawn on (outward: checked by ray parity in
+    // test_exact). Measured: 0.04-0.15 % reversed; the rule n_i . n_j of Hoppe et al. reversed
+    // 12 %, 0.05-38 % and 25 %.
+    const std::string data_dir = PCCD_DATA_DIR;
+    if (data_dir.empty()) {
+        PCCD_SKIP_TEST("the meshes of libcgal-demo were not found (PCCD_DATA_DIR is empty)");
+    }
+    for (const char* file : {"elephant.off", "fandisk.off", "part.off"}) {
+        PCCD::Triangle_mesh_data mesh = PCCD::IO::read_triangle_mesh(data_dir + "/" + file);
+        Eigen::Matrix3Xd v(3, Eigen::Index(mesh.vertices.size()));
+        for (std::size_t i = 0; i < mesh.vertices.size(); ++i) v.col(Eigen::Index(i)) = mesh.vertices[i];
+        PCCD::normalize_to_unit_cube(v);
+        for (std::size_t i = 0; i < mesh.vertices.size(); ++i) mesh.vertices[i] = v.col(Eigen::Index(i));
+        PCCD::Random_engine clean_engine(1);
+        const double spacing =
+            PCCD::Point_cloud<>(PCCD::sample_triangle_mesh(mesh.vertices, mesh.triangles, 8000, clean_engine).points).mean_spacing();
+        for (const double noise : {0.0, 0.3}) {
+            PCCD::Random_engine engine(7);
+            const auto sample = PCCD::sample_triangle_mesh(mesh.vertices, mesh.triangles, 8000, engine, {.noise_sigma = noise * spacing});
+            const PCCD::Point_cloud_object<> object(sample.points);
+            const double reversed = reversed_fraction(object, sample.normals);
+            INFO(file << ", noise " << noise << " spacings: " << 100.0 * reversed << " % of the normals reversed");
+            CHECK(reversed <= 0.005);
+        }
+    }
+}
 
 TEST_CASE("orientation over an adjacency_list k-NN graph makes closed surfaces face outward", "[surface]")
 {
