@@ -12,6 +12,7 @@ void register_kinetic_bench(CLI::App& app);  // pccd kinetic-bench --scene cloth
 void register_eval(CLI::App& app);           // pccd eval FILE --at "x y z" [--kernel K] [--json]
 void register_collide(CLI::App& app);        // pccd collide A B [--transform-a ...] [--mode first|all] [--cases FILE]
 void register_distance(CLI::App& app);       // pccd distance A B [--transform-a ...] [--penetration] [--margin M] [--cases FILE]
+void register_clearance(CLI::App& app);      // pccd clearance OBJECT SCENE --path POSES.csv --margin M [--max-distance CAP] [--json] [--png F]
 void register_contact_time(CLI::App& app);   // pccd contact-time A B [--from-a ...] [--to-a ...] [--motion linear|screw] [--cases FILE]
 void register_render(CLI::App& app);         // pccd render A [B] [--transform-a ...] [--points P] [--out F.png]
 void register_world(CLI::App& app);          // pccd world SCENE.csv | --generate FILE:COUNT [--json] [--png F.png]

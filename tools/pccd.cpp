@@ -21,6 +21,7 @@ int main(int argc, char** argv)
     pccd_tool::register_eval(app);
     pccd_tool::register_collide(app);
     pccd_tool::register_distance(app);
+    pccd_tool::register_clearance(app);
     pccd_tool::register_contact_time(app);
     pccd_tool::register_bench(app);
     pccd_tool::register_render(app);

@@ -1,7 +1,9 @@
 // tools/pose_cases.h -- the --cases files of `pccd collide` and `pccd distance` (CSV rows of 24
 // numbers, the pose of A and then the pose of B, each a 3x4 [R | t] matrix row by row;
-// doc/manual/cli_collide.md, "--cases FILE") and of `pccd contact-time` (rows of 48 numbers, the
-// start and end poses of A and of B; doc/manual/continuous.md, "CLI and Python").
+// doc/manual/cli_collide.md, "--cases FILE"), of `pccd contact-time` (rows of 48 numbers, the
+// start and end poses of A and of B; doc/manual/continuous.md, "CLI and Python") and the --path
+// files of `pccd clearance` (rows of 12 numbers, one pose each; doc/manual/proximity-cli-python.md,
+// "pccd clearance").
 #pragma once
 
 #include "transform_options.h"
@@ -93,6 +95,35 @@ inline std::vector<Motion_case> read_motion_cases(const std::string& path, bool 
     }
     if (cases.empty()) throw PCCD::Invalid_input(path + ": no cases (expected rows of 48 numbers)");
     return cases;
+}
+
+/// The rows of a `pccd clearance --path` CSV: 12 numbers each (one pose, 3x4 row-major), with the
+/// rules of read_cases (comments, blank lines, an optional header; every other problem throws,
+/// naming the file, the line and the pose's index). With `orthonormalize`, each rotation is
+/// replaced by its nearest rotation (make_transform).
+inline std::vector<PCCD::Rigid_transform_3<double>> read_path(const std::string& path, bool orthonormalize = false)
+{
+    std::ifstream in(path);
+    if (!in)
+        throw PCCD::File_error(path, std::filesystem::exists(path) ? "cannot open the path file"
+                                                                   : "cannot open the path file: it does not exist (missing file)");
+    std::vector<PCCD::Rigid_transform_3<double>> poses;
+    bool first_row = true;
+    std::string text;
+    for (std::size_t line = 1; std::getline(in, text); ++line) {
+        const std::vector<std::string> fields = split_fields(text);
+        if (fields.empty() || fields.front().front() == '#') continue;
+        const bool header = first_row && !parse_number(fields.front());
+        first_row = false;
+        if (header) continue;
+        const std::string where = path + ":" + std::to_string(line) + ": pose " + std::to_string(poses.size());
+        if (fields.size() != 12)
+            throw PCCD::Invalid_input(where + ": expected 12 numbers (3x4 row-major [R | t]), got " +
+                                      std::to_string(fields.size()) + " fields");
+        poses.push_back(make_transform(fields, 0, where, orthonormalize));
+    }
+    if (poses.empty()) throw PCCD::Invalid_input(path + ": no poses (expected rows of 12 numbers)");
+    return poses;
 }
 
 /// The poses of a query command: the rows of the --cases file when one is given (poses unset),

@@ -31,7 +31,10 @@ distance, within_distance, contacts
     penetration depths), whether they come closer than a margin, and their contact regions.
 distance_many
     distance for many pairs in one call, on several threads (seeded by `pair_seed`).
-DistanceResult, ClearanceResult, ContactResult, Contact
+clearance
+    An object moved along a path of poses through a scene: the clearance at every pose against
+    a safety margin, the first pose below it and the minimum (on several threads).
+DistanceResult, ClearanceResult, ContactResult, Contact, ClearanceProfile
     Their answers, with the attributes named as the fields of PCCD's C++ results.
 time_of_contact, time_of_contact_many
     Continuous collision: when two objects moving rigidly (linear or screw motions between a start
@@ -65,6 +68,7 @@ doc/manual/proximity-cli-python.md; continuous collision: doc/manual/continuous.
 """
 
 from ._pccd import (
+    ClearanceProfile,
     ClearanceResult,
     Contact,
     ContactResult,
@@ -75,6 +79,7 @@ from ._pccd import (
     World,
     WorldHandle,
     __version__,
+    clearance,
     contacts,
     distance,
     distance_many,
@@ -108,8 +113,10 @@ __all__ = [
     "within_distance",
     "contacts",
     "distance_many",
+    "clearance",
     "DistanceResult",
     "ClearanceResult",
+    "ClearanceProfile",
     "ContactResult",
     "Contact",
     "time_of_contact",

@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace pccd_python {
 
@@ -97,6 +98,47 @@ PCCD::Rigid_transform_3<double> pose_argument(py::handle value, const char* name
         throw PCCD::Invalid_input(std::string(name) + ": " + e.what() +
                                   " (pccd.orthonormalize(pose) returns the nearest rigid pose and how far it is)");
     }
+}
+
+std::vector<PCCD::Rigid_transform_3<double>> pose_stack(py::handle value, const char* function, const char* name)
+{
+    using Pose = PCCD::Rigid_transform_3<double>;
+    using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+    const std::string prefix = std::string(function) + "(): ";
+    py::array any = py::array::ensure(value);
+    const char kind = any ? any.dtype().kind() : 'O';
+    if (kind != 'f' && kind != 'i' && kind != 'u')
+        throw py::value_error(prefix + name + " must be an array of shape (n, 3, 4) or (n, 4, 4) of numbers");
+    const Array a = Array::ensure(any);
+    if (a.ndim() != 3 || a.shape(2) != 4 || (a.shape(1) != 3 && a.shape(1) != 4)) {
+        std::string shape = "(";
+        for (py::ssize_t d = 0; d < a.ndim(); ++d) shape += (d ? ", " : "") + std::to_string(a.shape(d));
+        throw py::value_error(prefix + name + " must have shape (n, 3, 4) or (n, 4, 4), got " + shape +
+                              (a.ndim() == 1 ? ",)" : ")"));
+    }
+    const std::size_t count = std::size_t(a.shape(0));
+    const py::ssize_t rows = a.shape(1);
+    const double* m = a.data();
+    std::vector<Pose> poses;
+    poses.reserve(count);
+    for (std::size_t i = 0; i < count; ++i, m += rows * 4) {
+        const std::string where = prefix + name + "[" + std::to_string(i) + "]";
+        if (rows == 4) {
+            constexpr double tolerance = Pose::default_tolerance;
+            const double last[4] = {0.0, 0.0, 0.0, 1.0};
+            for (int k = 0; k < 4; ++k)
+                if (!(std::abs(m[12 + k] - last[k]) <= tolerance))
+                    throw py::value_error(where + ": the last row of a 4x4 pose must be [0, 0, 0, 1]");
+        }
+        std::array<double, 12> entries;
+        for (int k = 0; k < 12; ++k) entries[std::size_t(k)] = m[k];
+        try {
+            poses.emplace_back(entries);
+        } catch (const PCCD::Invalid_input& e) {
+            throw PCCD::Invalid_input(where + ": " + e.what());
+        }
+    }
+    return poses;
 }
 
 py::tuple orthonormalize_pose(py::handle value)

@@ -16,6 +16,7 @@
 #include <cstring>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace pccd_python {
 
@@ -57,6 +58,11 @@ Row_array row_array(py::handle value, const char* name);
 /// rule of Rigid_transform_3: R^T R - I within its default tolerance, det R > 0; the last row of a
 /// 4x4 within the same tolerance of 0 0 0 1).
 PCCD::Rigid_transform_3<double> pose_argument(py::handle value, const char* name);
+
+/// A stack of poses: an (n, 3, 4) or (n, 4, 4) array read row by row, each checked as one pose
+/// argument is (rigid within Rigid_transform_3's tolerance; a 4x4's last row 0 0 0 1). ValueError
+/// "<function>(): <name>[i]: ..." naming the first bad pose, or the shape.
+std::vector<PCCD::Rigid_transform_3<double>> pose_stack(py::handle value, const char* function, const char* name);
 
 /// pccd.orthonormalize(pose): (the pose with the nearest rotation, in the shape given, and the
 /// largest change of an entry), PCCD::orthonormalize on a 3x4 or 4x4 array.

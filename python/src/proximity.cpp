@@ -1,12 +1,14 @@
-// python/src/proximity.cpp -- the proximity queries of pccd: distance, within_distance, contacts and
-// the batch distance_many (PCCD/Proximity/), with Distance_options and the intersection options
-// that decide the status as keyword arguments, and their results, DistanceResult,
-// ClearanceResult, ContactResult and Contact, whose attributes are named as the C++ fields. Every
+// python/src/proximity.cpp -- the proximity queries of pccd: distance, within_distance, contacts,
+// the batch distance_many and clearance along a path (PCCD/Proximity/), with Distance_options and
+// the intersection options that decide the status as keyword arguments, and their results,
+// DistanceResult, ClearanceResult, ContactResult, Contact and ClearanceProfile, whose attributes
+// are named as the C++ fields. Every
 // query runs with the GIL released (doc/manual/proximity-cli-python.md, "Python").
 #include "pccd_python.h"
 #include "posed_pairs.h"
 
 #include <PCCD/Error.h>
+#include <PCCD/Proximity/clearance.h>
 #include <PCCD/Proximity/contacts.h>
 #include <PCCD/Proximity/distance.h>
 #include <PCCD/Proximity/distance_many.h>
@@ -43,6 +45,7 @@ struct Held {
 using Distance_held = Held<PCCD::Distance_result>;
 using Clearance_held = Held<PCCD::Clearance_result>;
 using Contact_held = Held<PCCD::Contact_result>;
+using Profile_held = Held<PCCD::Clearance_profile>;
 
 /// The keyword arguments of a proximity query: the fields of Distance_options, those of its
 /// Intersection_options that do not concern the leaf intersector's budgets, and for
@@ -120,6 +123,25 @@ py::array_t<double> vector_array(const Eigen::Vector3d& v)
     py::array_t<double> a(3);
     auto out = a.mutable_unchecked<1>();
     for (int j = 0; j < 3; ++j) out(j) = v(j);
+    return a;
+}
+
+/// A per-pose number of a profile as a new float64 array of shape (n,).
+py::array_t<double> sample_values(const PCCD::Clearance_profile& p, double PCCD::Clearance_sample::*field)
+{
+    py::array_t<double> a(py::ssize_t(p.samples.size()));
+    auto out = a.mutable_unchecked<1>();
+    for (std::size_t i = 0; i < p.samples.size(); ++i) out(py::ssize_t(i)) = p.samples[i].*field;
+    return a;
+}
+
+/// A per-pose point of a profile as a new float64 array of shape (n, 3).
+py::array_t<double> sample_points(const PCCD::Clearance_profile& p, Eigen::Vector3d PCCD::Clearance_sample::*field)
+{
+    py::array_t<double> a({py::ssize_t(p.samples.size()), py::ssize_t(3)});
+    auto out = a.mutable_unchecked<2>();
+    for (std::size_t i = 0; i < p.samples.size(); ++i)
+        for (int j = 0; j < 3; ++j) out(py::ssize_t(i), j) = (p.samples[i].*field)(j);
     return a;
 }
 
@@ -406,6 +428,96 @@ points_inside : int
     Cloud points of both objects found inside the other object in this region.
 )doc";
 
+
+const std::string clearance_doc = std::string(R"doc(The clearance of an object moved along a path of poses through a scene.
+
+PCCD::clearance: at every pose the distance between the two implicit surfaces (one distance query
+per pose, on several threads), placed against `margin`: 'clear', 'below_margin' (strictly closer
+than the margin), 'intersecting', 'beyond_cap' (farther than max_distance) or 'undecided' (a
+budget ran out); over the path the first pose below the margin with its witness points and the
+minimum clearance.
+
+Parameters
+----------
+object, scene : Object
+    The moving object and the scene (the scene stays at the identity).
+poses : array_like
+    (n, 3, 4) or (n, 4, 4): the object's poses in the scene's frame, [R | t] row by row; n may be 0.
+margin : float
+    The safety margin (world units), finite and >= 0.
+max_distance : float, optional
+    The cap: a pose farther apart than this is reported 'beyond_cap' (clearance inf,
+    lower_bound >= the cap), cheaply. None (default): no cap, every pose gets its distance.
+    Finite and >= margin.
+threads : int, optional
+    Worker threads, 1 to 4096; None (default) uses all available. The results do not depend on it.
+first_index : int, optional
+    Index of poses[0] in a longer path split into chunks (default 0): pose i is seeded as pose
+    first_index + i of the whole (pccd.pair_seed(seed, first_index + i)).
+)doc") + options_doc + R"doc(
+
+Returns
+-------
+ClearanceProfile
+    ``margin``, ``max_distance``, per pose ``status`` (list of str), ``clearance``,
+    ``lower_bound``, ``upper_bound``, ``depth`` ((n,) arrays), ``point_object``, ``point_scene``
+    ((n, 3) arrays); ``first_below_margin``, ``first_point_object``, ``first_point_scene``,
+    ``minimum``, ``minimum_clearance``, ``first_undecided``, ``all_clear``, ``counters``,
+    ``query_us``: the fields of PCCD::Clearance_profile.
+
+Raises
+------
+ValueError
+    A negative or NaN margin, a cap below the margin, poses of another shape or a pose that is not
+    rigid (naming its index), or an invalid option; nothing is computed then.
+
+Examples
+--------
+>>> path = np.array([[[1., 0., 0., x], [0., 1., 0., 0.], [0., 0., 1., 0.]] for x in (3.0, 2.5, 2.1)])
+>>> p = pccd.clearance(ball, ball, path, 0.3)
+>>> p.status, p.first_below_margin
+(['clear', 'clear', 'below_margin'], 2)
+)doc";
+
+const char* clearance_profile_doc = R"doc(The answer of clearance(): PCCD::Clearance_profile.
+
+Per-pose values are arrays over the poses (new arrays at each access); points are in the scene's
+frame; what was not computed is NaN.
+
+Attributes
+----------
+margin : float
+    The margin asked for.
+max_distance : float or None
+    The cap asked for.
+status : list of str
+    Per pose: 'clear', 'below_margin', 'intersecting', 'beyond_cap' or 'undecided'.
+clearance : numpy.ndarray
+    (n,): the distance between the surfaces (0 intersecting, inf beyond the cap, NaN undecided).
+lower_bound, upper_bound : numpy.ndarray
+    (n,): the honest interval around each clearance.
+point_object, point_scene : numpy.ndarray
+    (n, 3): the closest points found on the object's and on the scene's surface.
+depth : numpy.ndarray
+    (n,): intersecting poses with penetration=True: the penetration depth; NaN otherwise.
+first_below_margin : int or None
+    The first pose 'below_margin' or 'intersecting'.
+first_point_object, first_point_scene : numpy.ndarray
+    (3,): its witness points.
+minimum : int or None
+    The first pose of the smallest finite clearance; minimum_clearance is that clearance (inf when
+    there is none).
+first_undecided : int or None
+    The first 'undecided' pose.
+all_clear : bool
+    No pose below the margin, intersecting or undecided.
+counters : dict
+    Poses by status ('clear', 'below_margin', 'intersecting', 'beyond_cap', 'undecided') and
+    'work': the sum of the poses' work counters, named as DistanceResult.counters.
+query_us : float
+    Wall-clock microseconds of the whole path in PCCD's C++.
+)doc";
+
 } // namespace
 
 py::object clearance_result(const PCCD::Clearance_result& r) { return py::cast(Clearance_held{r}); }
@@ -537,6 +649,68 @@ void add_proximity(py::module_& m)
             return out;
         },
         py::arg("pairs"), distance_many_doc.c_str());
+
+    py::class_<Profile_held>(m, "ClearanceProfile", clearance_profile_doc)
+        .def_property_readonly("margin", [](const Profile_held& h) { return h.r.margin; })
+        .def_property_readonly("max_distance", [](const Profile_held& h) { return h.r.max_distance; })
+        .def_property_readonly("status",
+                               [](const Profile_held& h) {
+                                   py::list out;
+                                   for (const PCCD::Clearance_sample& x : h.r.samples) out.append(PCCD::to_string(x.status));
+                                   return out;
+                               })
+        .def_property_readonly("clearance", [](const Profile_held& h) { return sample_values(h.r, &PCCD::Clearance_sample::clearance); })
+        .def_property_readonly("lower_bound", [](const Profile_held& h) { return sample_values(h.r, &PCCD::Clearance_sample::lower_bound); })
+        .def_property_readonly("upper_bound", [](const Profile_held& h) { return sample_values(h.r, &PCCD::Clearance_sample::upper_bound); })
+        .def_property_readonly("depth", [](const Profile_held& h) { return sample_values(h.r, &PCCD::Clearance_sample::depth); })
+        .def_property_readonly("point_object", [](const Profile_held& h) { return sample_points(h.r, &PCCD::Clearance_sample::point_object); })
+        .def_property_readonly("point_scene", [](const Profile_held& h) { return sample_points(h.r, &PCCD::Clearance_sample::point_scene); })
+        .def_property_readonly("first_below_margin", [](const Profile_held& h) { return h.r.first_below_margin; })
+        .def_property_readonly("first_point_object", [](const Profile_held& h) { return vector_array(h.r.first_point_object); })
+        .def_property_readonly("first_point_scene", [](const Profile_held& h) { return vector_array(h.r.first_point_scene); })
+        .def_property_readonly("minimum", [](const Profile_held& h) { return h.r.minimum; })
+        .def_property_readonly("minimum_clearance", [](const Profile_held& h) { return h.r.minimum_clearance; })
+        .def_property_readonly("first_undecided", [](const Profile_held& h) { return h.r.first_undecided; })
+        .def_property_readonly("all_clear", [](const Profile_held& h) { return h.r.all_clear(); })
+        .def_property_readonly("counters",
+                               [](Profile_held& h) {
+                                   if (!h.counters) {
+                                       const PCCD::Clearance_counters& c = h.r.counters;
+                                       py::dict d;
+                                       d["clear"] = c.clear;
+                                       d["below_margin"] = c.below_margin;
+                                       d["intersecting"] = c.intersecting;
+                                       d["beyond_cap"] = c.beyond_cap;
+                                       d["undecided"] = c.undecided;
+                                       d["work"] = counters_dict(c.work);
+                                       h.counters = d;
+                                   }
+                                   return h.counters;
+                               })
+        .def_property_readonly("query_us", [](const Profile_held& h) { return h.query_us; })
+        .def("__len__", [](const Profile_held& h) { return h.r.samples.size(); })
+        .def("__repr__", [](const Profile_held& h) {
+            return "<pccd.ClearanceProfile: " + std::to_string(h.r.samples.size()) + " poses, margin " +
+                   number_text(h.r.margin) + ", first below " +
+                   (h.r.first_below_margin ? std::to_string(*h.r.first_below_margin) : std::string("none")) +
+                   ", minimum " + number_text(h.r.minimum_clearance) + ">";
+        });
+    m.def(
+        "clearance",
+        [](const Object& object, const Object& scene, const py::object& poses, double margin, const py::kwargs& kwargs) {
+            if (!(std::isfinite(margin) && margin >= 0.0))
+                throw py::value_error("clearance(): margin " + number_text(margin) + " must be finite and >= 0 (world units)");
+            Distance_arguments arguments = distance_arguments(kwargs, true, "clearance");
+            PCCD::Clearance_options options{.max_distance = arguments.options.max_distance,
+                                            .distance = arguments.options,
+                                            .batch = {.threads = arguments.threads, .first_index = arguments.first_index}};
+            options.distance.max_distance.reset();
+            PCCD::internal::check_options(options, margin, "clearance()");
+            const std::vector<PCCD::Rigid_transform_3<double>> path = pose_stack(poses, "clearance", "poses");
+            auto [r, us] = timed([&] { return PCCD::clearance(object, scene, path, margin, options); });
+            return Profile_held{std::move(r), us};
+        },
+        py::arg("object"), py::arg("scene"), py::arg("poses"), py::arg("margin"), clearance_doc.c_str());
 }
 
 } // namespace pccd_python

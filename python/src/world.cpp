@@ -74,49 +74,6 @@ Handle handle_argument(const py::handle& value, const char* function, const char
     return value.cast<Handle>();
 }
 
-/// The poses of set_poses: an (n, 3, 4) or (n, 4, 4) array read row by row, each checked as one
-/// pose argument is (rigid within Rigid_transform_3's tolerance; a 4x4's last row 0 0 0 1).
-std::vector<Pose> pose_stack(const py::handle& value, std::size_t expected)
-{
-    using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
-    py::array any = py::array::ensure(value);
-    const char kind = any ? any.dtype().kind() : 'O';
-    if (kind != 'f' && kind != 'i' && kind != 'u')
-        throw py::value_error("World.set_poses(): poses must be an array of shape (n, 3, 4) or (n, 4, 4) of numbers");
-    const Array a = Array::ensure(any);
-    if (a.ndim() != 3 || a.shape(2) != 4 || (a.shape(1) != 3 && a.shape(1) != 4)) {
-        std::string shape = "(";
-        for (py::ssize_t d = 0; d < a.ndim(); ++d) shape += (d ? ", " : "") + std::to_string(a.shape(d));
-        throw py::value_error("World.set_poses(): poses must have shape (n, 3, 4) or (n, 4, 4), got " + shape +
-                              (a.ndim() == 1 ? ",)" : ")"));
-    }
-    if (std::size_t(a.shape(0)) != expected)
-        throw py::value_error("World.set_poses(): " + std::to_string(expected) + " handles but " +
-                              std::to_string(a.shape(0)) + " poses");
-    const py::ssize_t rows = a.shape(1);
-    const double* m = a.data();
-    std::vector<Pose> poses;
-    poses.reserve(expected);
-    for (std::size_t i = 0; i < expected; ++i, m += rows * 4) {
-        const std::string where = "World.set_poses(): poses[" + std::to_string(i) + "]";
-        if (rows == 4) {
-            constexpr double tolerance = Pose::default_tolerance;
-            const double last[4] = {0.0, 0.0, 0.0, 1.0};
-            for (int k = 0; k < 4; ++k)
-                if (!(std::abs(m[12 + k] - last[k]) <= tolerance))
-                    throw py::value_error(where + ": the last row of a 4x4 pose must be [0, 0, 0, 1]");
-        }
-        std::array<double, 12> entries;
-        for (int k = 0; k < 12; ++k) entries[std::size_t(k)] = m[k];
-        try {
-            poses.emplace_back(entries);
-        } catch (const PCCD::Invalid_input& e) {
-            throw PCCD::Invalid_input(where + ": " + e.what());
-        }
-    }
-    return poses;
-}
-
 /// pccd.World. The C++ world holds its objects by std::shared_ptr<const Object>, while pccd.Object
 /// instances live in Python objects (pybind11's default holder). The choice made here: the wrapper
 /// keeps, for every slot of the world, a reference to the Python object inserted there
@@ -376,7 +333,10 @@ TypeError
                 list.reserve(py::len(handles));
                 for (std::size_t i = 0; i < py::len(handles); ++i)
                     list.push_back(handle_argument(handles[i], "World.set_poses", ("handles[" + std::to_string(i) + "]").c_str()));
-                const std::vector<Pose> p = pose_stack(poses, list.size());
+                const std::vector<Pose> p = pose_stack(poses, "World.set_poses", "poses");
+                if (p.size() != list.size())
+                    throw py::value_error("World.set_poses(): " + std::to_string(list.size()) + " handles but " +
+                                          std::to_string(p.size()) + " poses");
                 const auto l = w.lock();
                 w.world().set_poses(list, p);
             },

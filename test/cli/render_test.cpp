@@ -3,7 +3,9 @@
 // intersection_points(); their surfaces meet in the circle x = 0.6, y^2 + z^2 = 0.8^2. The picture
 // must show each sphere's colour where that sphere is visible, the curve's colour along the visible
 // part of the circle and nowhere far from it, and the background outside both spheres' outlines.
-// Then the PNG round trip (read back with stb_image.h) and the renderer's errors.
+// Then the PNG round trip (read back with stb_image.h), the renderer's errors, and the profile plot
+// of `pccd clearance --png` (tools/render/plot.h) by pixel checks at the places its mapping gives.
+#include <render/plot.h>
 #include <render/render.h>
 #include <render_objects.h>
 
@@ -269,4 +271,61 @@ TEST_CASE("The renderer rejects bad input with clear errors", "[render]")
     image.rgb.assign(3 * 16 * 16, 0);
     CHECK_THROWS_AS(pccd_render::write_png(std::string(PCCD_TEST_TMP_DIR) + "/no/such/dir/x.png", image),
                     PCCD::File_error);
+}
+
+TEST_CASE("The profile plot: dots, levels, bars and the marker where the mapping puts them", "[render]")
+{
+    pccd_render::Profile_plot plot;
+    const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+    plot.values = {0.5, 1.0, inf, nan};
+    const pccd_render::Rgb red{220, 20, 30}, grey{150, 150, 150}, green{20, 160, 60};
+    plot.dot_colours = {pccd_render::colour_a, red, grey, pccd_render::colour_a};
+    plot.lower = {0.2, 0.9, 1.5, nan};
+    plot.upper = {0.8, 1.1, inf, nan};
+    plot.levels = {{1.5, green, false}};
+    plot.marker = 1;
+    plot.y_max = 2.0;
+    const int w = 400, h = 300;
+    const pccd_render::Image image = pccd_render::plot_profile(plot, w, h);
+    REQUIRE(image.width == w);
+    REQUIRE(image.height == h);
+    const auto px = [&](std::size_t i) { return int(std::lround(pccd_render::plot_x(i, 4, w, h))); };
+    const auto py = [&](double y) { return int(std::lround(pccd_render::plot_y(y, plot.y_max, w, h))); };
+    const int m = pccd_render::plot_margin(w, h);
+    // the mapping: index 0 at the left edge of the plot area, the last at its right; 0 at the bottom, y_max at the top
+    CHECK(px(0) == m);
+    CHECK(px(3) == w - 1 - m);
+    CHECK(py(0.0) == h - 1 - m);
+    CHECK(py(2.0) == m);
+    // each value's dot in its colour; +inf at the top edge; NaN not drawn
+    CHECK(image.at(px(0), py(0.5)) == pccd_render::colour_a);
+    CHECK(image.at(px(1), py(1.0)) == red);
+    CHECK(image.at(px(2), py(2.0)) == grey);
+    CHECK(image.at(px(3), py(0.5)) == pccd_render::colour_background);
+    CHECK(image.at(px(3), py(1.0)) == pccd_render::colour_background);
+    // index 2's interval bar below its dot, the level across the plot away from the polyline, the
+    // dashed marker at index 1 from the top
+    CHECK(image.at(px(2), py(1.75)) == plot.bar_colour);
+    CHECK(image.at(px(0) + 2, py(1.5)) == green);
+    CHECK(image.at(px(3) - 2, py(1.5)) == green);
+    CHECK(image.at(px(1), m + 2) == red);
+    // the axes
+    CHECK(image.at(w / 2, h - 1 - m) == plot.axis_colour);
+    CHECK(image.at(m, h / 2) == plot.axis_colour);
+    // outside the plot area: background
+    CHECK(image.at(2, 2) == pccd_render::colour_background);
+
+    CHECK_THROWS_WITH(pccd_render::plot_profile(plot, 8, 300), Catch::Contains("[16, 8192]"));
+    pccd_render::Profile_plot bad = plot;
+    bad.y_max = 0.0;
+    CHECK_THROWS_WITH(pccd_render::plot_profile(bad, w, h), Catch::Contains("y_max"));
+    bad = plot;
+    bad.dot_colours.pop_back();
+    CHECK_THROWS_WITH(pccd_render::plot_profile(bad, w, h), Catch::Contains("dot colour"));
+    bad = plot;
+    bad.upper.pop_back();
+    CHECK_THROWS_WITH(pccd_render::plot_profile(bad, w, h), Catch::Contains("interval bars"));
+    // an empty plot is only the axes
+    const pccd_render::Image empty = pccd_render::plot_profile(pccd_render::Profile_plot{}, 64, 64);
+    CHECK(empty.at(32, 64 - 1 - pccd_render::plot_margin(64, 64)) == pccd_render::Profile_plot{}.axis_colour);
 }

@@ -423,6 +423,135 @@ elseif(CASE STREQUAL "distance_bad_arguments")
   pccd_run(FAIL ARGS distance sphere.xyz sphere.xyz --margin 1 --contacts MATCH "excludes")
   pccd_run(FAIL ARGS distance sphere.xyz sphere.xyz --cases distance_cases.csv --json MATCH "excludes")
   pccd_run(FAIL ARGS distance no_such_cloud.xyz sphere.xyz MATCH "no_such_cloud.xyz: .*missing file")
+elseif(CASE MATCHES "^clearance_")
+  # pccd clearance: make_cli_data's unit sphere (2000 points, mean spacing about 0.08) moved along x
+  # past a copy of itself at the origin, centres 4 to 2.25 apart: analytic clearances (the surface
+  # gap) 2, 1.75, ..., 0.25. With margin 0.6 the first pose below it is pose 6 (gap 0.5) and the
+  # minimum is pose 7 (gap 0.25): both 0.1 or more from the margin, beyond the distance's accuracy
+  # (half a spacing, test/Proximity/distance_test.cpp).
+  file(WRITE ${WORK}/clearance_path.csv
+"r00,r01,r02,t0,r10,r11,r12,t1,r20,r21,r22,t2
+1,0,0,4,0,1,0,0,0,0,1,0
+1,0,0,3.75,0,1,0,0,0,0,1,0
+# turned 90 degrees about z: the same sphere
+0,-1,0,3.5,1,0,0,0,0,0,1,0
+
+1,0,0,3.25,0,1,0,0,0,0,1,0
+1,0,0,3,0,1,0,0,0,0,1,0
+1,0,0,2.75,0,1,0,0,0,0,1,0
+1,0,0,2.5,0,1,0,0,0,0,1,0
+1,0,0,2.25,0,1,0,0,0,0,1,0
+")
+  set(number "[-0-9.e+infa]+")
+  if(CASE STREQUAL "clearance_text")
+    pccd_run(OK ARGS clearance sphere.xyz sphere.xyz --path clearance_path.csv --margin 0.6
+             STDOUT_MATCH "object: sphere.xyz, 2000 points" "scene: the same object"
+                          "path: clearance_path.csv, 8 poses, margin 0.6, max_distance none, seed 24301"
+                          "\npose,status,clearance,lower_bound,upper_bound\n0,clear,(1\\.9[6-9]|2\\.0[0-4])[0-9]*,${number},${number}\n"
+                          "\n5,clear,0\\.7[0-9]*,${number},${number}\n6,below_margin,0\\.[45][0-9]*,${number},${number}\n7,below_margin,0\\.2[0-9]*,"
+                          "\nfirst_below_margin: 6 \\(below_margin, clearance 0\\.[45][0-9]*\\)\n"
+                          "\nfirst_point_object: \\[1\\.[45][0-9]*, ${number}, ${number}\\]\n"
+                          "\nfirst_point_scene: \\[(1\\.0|0\\.9)[0-9]*, ${number}, ${number}\\]\n"
+                          "\nminimum: 7, minimum_clearance 0\\.2[0-9]*\n"
+                          "\nposes: clear 6, below_margin 2, intersecting 0, beyond_cap 0, undecided 0\n"
+                          "\nall_clear: no\n" "\ncounters: node_pairs [0-9]+ " "\nquery_ms: [0-9.]+\n")
+    # Far enough everywhere: nothing below the margin.
+    pccd_run(OK ARGS clearance sphere.xyz sphere.xyz --path clearance_path.csv --margin 0.1
+             STDOUT_MATCH "\nfirst_below_margin: none\n" "\nall_clear: yes\n")
+    # The torus (outer radius 1) as the scene: the same gaps.
+    pccd_run(OK ARGS clearance sphere.xyz torus.ply --path clearance_path.csv --margin 0.6 --threads 1
+             STDOUT_MATCH "\nfirst_below_margin: 6 " "\nminimum: 7, ")
+  elseif(CASE STREQUAL "clearance_json")
+    pccd_run(OK ARGS clearance sphere.xyz sphere.xyz --path clearance_path.csv --margin 0.6 --seed 5 --threads 2 --json
+             MATCH "\"poses\": 8," "\"margin\": 0.6," "\"max_distance\": null," "\"samples\": .\n"
+                   "\"status\": \"below_margin\"" "\"point_object\": .\n" "\"point_scene\": .\n" "\"depth\": null"
+                   "\"first_below_margin\": 6," "\"first_point_object\": .\n" "\"minimum\": 7,"
+                   "\"first_undecided\": null," "\"all_clear\": false," "\"counters\": {\n +\"clear\": 6,"
+                   "\"below_margin\": 2," "\"work\": {\n +\"node_pairs\": [0-9]+" "\"intersection_f_evaluations\": [0-9]+"
+                   "\"query_ms\": [0-9.e+-]+")
+    file(WRITE ${WORK}/clearance.json "${PCCD_STDOUT}")
+    string(JSON n LENGTH "${PCCD_STDOUT}" samples)
+    if(NOT n EQUAL 8)
+      message(FATAL_ERROR "expected 8 samples, got ${n}")
+    endif()
+    # Each clearance within half a spacing (0.04) of its gap, the interval around it.
+    set(lows 1.96 1.71 1.46 1.21 0.96 0.71 0.46 0.21)
+    set(highs 2.04 1.79 1.54 1.29 1.04 0.79 0.54 0.29)
+    foreach(i RANGE 7)
+      list(GET lows ${i} low)
+      list(GET highs ${i} high)
+      string(JSON index GET "${PCCD_STDOUT}" samples ${i} index)
+      string(JSON c GET "${PCCD_STDOUT}" samples ${i} clearance)
+      string(JSON lower GET "${PCCD_STDOUT}" samples ${i} lower_bound)
+      string(JSON upper GET "${PCCD_STDOUT}" samples ${i} upper_bound)
+      if(NOT index EQUAL i)
+        message(FATAL_ERROR "sample ${i} has index ${index}")
+      endif()
+      pccd_expect_between(${c} ${low} ${high} "the clearance of pose ${i}")
+      pccd_expect_between(${lower} 0 ${c} "lower_bound of pose ${i}")
+      pccd_expect_between(${upper} ${c} 3 "upper_bound of pose ${i}")
+    endforeach()
+    pccd_json_number(minimum "${PCCD_STDOUT}" minimum_clearance)
+    pccd_expect_between(${minimum} 0.21 0.29 "the minimum clearance (gap 0.25)")
+    # The same answer for one thread (bit for bit: the same JSON but for the timings and threads).
+    pccd_run(OK ARGS clearance sphere.xyz sphere.xyz --path clearance_path.csv --margin 0.6 --seed 5 --threads 1 --json)
+    file(READ ${WORK}/clearance.json two)
+    foreach(text two PCCD_STDOUT)
+      string(JSON ${text}_samples GET "${${text}}" samples)
+      string(JSON ${text}_counters GET "${${text}}" counters)
+    endforeach()
+    if(NOT two_samples STREQUAL PCCD_STDOUT_samples OR NOT two_counters STREQUAL PCCD_STDOUT_counters)
+      message(FATAL_ERROR "the samples or counters differ between --threads 1 and --threads 2")
+    endif()
+  elseif(CASE STREQUAL "clearance_cap")
+    # A cap of 1.1: the poses of gaps 2 to 1.25 are beyond it (clearance null in the JSON, inf in the
+    # text), the others measured.
+    pccd_run(OK ARGS clearance sphere.xyz sphere.xyz --path clearance_path.csv --margin 0.6 --max-distance 1.1
+             STDOUT_MATCH "\n0,beyond_cap,inf,${number},${number}\n1,beyond_cap,inf," "\n3,beyond_cap,inf," "\n4,clear,(0\\.9[6-9]|1\\.0[0-4])[0-9]*,"
+                          "\n5,clear,0\\.7[0-9]*," "\nfirst_below_margin: 6 " "\nminimum: 7, ")
+    pccd_run(OK ARGS clearance sphere.xyz sphere.xyz --path clearance_path.csv --margin 0.6 --max-distance 1.1 --json
+             MATCH "\"max_distance\": 1.1," "\"status\": \"beyond_cap\",\n +\"clearance\": null" "\"beyond_cap\": 4,")
+  elseif(CASE STREQUAL "clearance_png")
+    file(REMOVE "${WORK}/clearance.png")
+    pccd_run(OK ARGS clearance sphere.xyz sphere.xyz --path clearance_path.csv --margin 0.6 --max-distance 1.5 --png clearance.png
+             MATCH "wrote [^\n]*clearance.png: clearance per pose blue")
+    pccd_check_png(clearance.png 800 480)
+    pccd_run(OK ARGS clearance sphere.xyz sphere.xyz --path clearance_path.csv --margin 0.6 --png clearance.png --json
+             MATCH "\"png\": \"[^\"]*clearance.png\"")
+  elseif(CASE STREQUAL "clearance_bad_arguments")
+    # Each refused before any preprocessing, with "pccd: error: " naming the option, the file, the
+    # line and the pose; never a crash.
+    pccd_run(FAIL ARGS clearance sphere.xyz sphere.xyz --path clearance_path.csv --margin -1
+             MATCH "pccd: error: --margin -1: must be >= 0")
+    pccd_run(FAIL ARGS clearance sphere.xyz sphere.xyz --path clearance_path.csv --margin nan
+             MATCH "pccd: error: --margin: \"nan\" is not a finite number")
+    pccd_run(FAIL ARGS clearance sphere.xyz sphere.xyz --path clearance_path.csv MATCH "--margin is required")
+    pccd_run(FAIL ARGS clearance sphere.xyz sphere.xyz --margin 0.5 MATCH "--path is required")
+    pccd_run(FAIL ARGS clearance sphere.xyz sphere.xyz --path clearance_path.csv --margin 0.6 --max-distance 0.5
+             MATCH "pccd: error: --max-distance 0.5: must be >= the margin 0.6")
+    pccd_run(FAIL ARGS clearance sphere.xyz sphere.xyz --path clearance_path.csv --margin 0.6 --tolerance 0
+             MATCH "pccd: error: --tolerance 0: must be > 0")
+    pccd_run(FAIL ARGS clearance sphere.xyz sphere.xyz --path clearance_path.csv --margin 0.6 --threads 100000
+             MATCH "pccd: error: --threads 100000: must be at most")
+    file(WRITE ${WORK}/clearance_nan.csv "1,0,0,4,0,1,0,0,0,0,1,0\n1,0,0,nan,0,1,0,0,0,0,1,0\n")
+    pccd_run(FAIL ARGS clearance sphere.xyz sphere.xyz --path clearance_nan.csv --margin 0.6
+             MATCH "pccd: error: clearance_nan.csv:2: pose 1: rigid transform: translation entry \\(0, 3\\) is nan")
+    file(WRITE ${WORK}/clearance_scaled.csv "# a scaling\n2,0,0,4,0,1,0,0,0,0,1,0\n")
+    pccd_run(FAIL ARGS clearance sphere.xyz sphere.xyz --path clearance_scaled.csv --margin 0.6
+             MATCH "pccd: error: clearance_scaled.csv:2: pose 0: rigid transform: the rotation part scales")
+    file(WRITE ${WORK}/clearance_short.csv "1,0,0,4,0,1,0,0,0,0,1\n")
+    pccd_run(FAIL ARGS clearance sphere.xyz sphere.xyz --path clearance_short.csv --margin 0.6
+             MATCH "pccd: error: clearance_short.csv:1: pose 0: expected 12 numbers .*, got 11 fields")
+    file(WRITE ${WORK}/clearance_empty.csv "# nothing\n")
+    pccd_run(FAIL ARGS clearance sphere.xyz sphere.xyz --path clearance_empty.csv --margin 0.6
+             MATCH "pccd: error: clearance_empty.csv: no poses")
+    pccd_run(FAIL ARGS clearance sphere.xyz sphere.xyz --path no_such_path.csv --margin 0.6
+             MATCH "no_such_path.csv: .*missing file")
+    pccd_run(FAIL ARGS clearance no_such_cloud.xyz sphere.xyz --path clearance_path.csv --margin 0.6
+             MATCH "no_such_cloud.xyz: .*missing file")
+  else()
+    message(FATAL_ERROR "unknown case ${CASE}")
+  endif()
 elseif(CASE MATCHES "^contact_time_")
   # pccd contact-time on make_cli_data's unit sphere (2000 points, mean spacing about 0.08) and
   # torus (radii 0.7 and 0.3 about z): analytic first contact times, every JSON field and every

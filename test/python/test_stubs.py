@@ -45,7 +45,7 @@ def test_the_stubs_name_every_public_attribute_and_nothing_else():
     assert set(pccd.__all__) <= stubbed
     for cls in (compiled.Object, compiled.Result, compiled.DistanceResult, compiled.ClearanceResult,
                 compiled.ContactResult, compiled.Contact, compiled.World, compiled.WorldHandle,
-                compiled.ContactTimeResult):
+                compiled.ContactTimeResult, compiled.ClearanceProfile):
         members = public(dir(cls))
         stubbed_members = {m for m in class_members(names[cls.__name__]) if not m.startswith("_")}
         assert members - stubbed_members == set(), f"{cls.__name__}: not in the stubs: {sorted(members - stubbed_members)}"
@@ -55,7 +55,7 @@ def test_the_stubs_name_every_public_attribute_and_nothing_else():
 def test_the_stubbed_parameters_are_the_modules():
     names = stub_names(stub_tree())
     for name in ("read_points", "write_points", "orthonormalize", "pair_seed", "do_intersect", "intersection_points",
-                 "distance", "within_distance", "contacts", "time_of_contact", "time_of_contact_many"):
+                 "distance", "within_distance", "contacts", "clearance", "time_of_contact", "time_of_contact_many"):
         node = names[name]
         stubbed = [a.arg for a in node.args.args] + [a.arg for a in node.args.kwonlyargs]
         signature = getattr(compiled, name).__doc__.splitlines()[0]  # pybind11: "name(a: ..., b: ...) -> ..."
