@@ -114,10 +114,11 @@ inline double orientation_agreement(const Eigen::Vector3d& nv, const Eigen::Vect
 }
 
 /// How much the weight of an edge grows with its slope out of the tangent planes (see
-/// orientation_edge_weight()). Measured on area samples of 13 closed models of libcgal-demo (8,000
-/// and 30,000 points, clean and with noise of 0.3 mean spacings; doc/benchmarks.md "Normal
-/// orientation"): 0.5 left 0–0.1 % of the normals reversed on 11 of them where 0 left up to 3.7 %
-/// (the noisy anchor), and 1 and 2 did no better.
+/// orientation_edge_weight()). Measured on 8,000-point area samples of 13 closed models of
+/// libcgal-demo, clean and with noise of 0.3 mean spacings (doc/benchmarks.md "Normal
+/// orientation"): with 0.5 at most 0.15 % of the normals were reversed on 10 of them (0.45-2.4 % on
+/// the helmet and the armadillo); without the term, up to 3.7 % (the noisy anchor; 0.06 % with
+/// it); 1 and 2 did no better than 0.5.
 inline constexpr double orientation_slope_weight = 0.5;
 
 /// The weight of the edge d = p_w - p_v in the spanning tree of the orientation: 1 - |agreement|
