@@ -3,9 +3,10 @@
 // writes N random points (fixed seed) as: binary PLY of doubles with and without normals and an
 // XYZ file with normals (PCCD::IO::write_points), a binary PLY of floats and a binary PLY of floats
 // with three uchar colour properties (written here: PCCD's writer writes doubles only), then times
-// read_points on each: the median of 3 reads with the file in the page cache ("warm"), and one
-// read after the file's pages were dropped from the cache with posix_fadvise(POSIX_FADV_DONTNEED)
-// ("cold"). Memory: the peak resident set (VmHWM of /proc/self/status, reset before each read by
+// read_points on each: the median of 3 reads with the file in the page cache ("warm": wall time,
+// and the process's CPU time, user and system, which other processes on the machine disturb
+// less), and one read after the file's pages were dropped from the cache with
+// posix_fadvise(POSIX_FADV_DONTNEED) ("cold"). Memory: the peak resident set (VmHWM of /proc/self/status, reset before each read by
 // writing 5 to /proc/self/clear_refs) minus the resident set before the read, per point, glibc's
 // mmap threshold fixed at 1 MiB so that freed blocks leave the resident set; 24 bytes per point
 // (48 with normals) is the size of the result itself. The files are synced to the disk before the
@@ -21,6 +22,7 @@
 
 #include <fcntl.h>
 #include <malloc.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -53,6 +55,14 @@ bool reset_peak()
     out << "5";
     out.flush();
     return bool(out);
+}
+
+/// The CPU time of the process (user and system) in ms.
+double cpu_ms()
+{
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return 1e3 * double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-3 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
 }
 
 /// Drops the file's pages from the page cache.
@@ -94,6 +104,7 @@ void write_float_ply(const std::string& path, const PCCD::Point_data& data, bool
 
 struct Measure {
     double warm_ms = 0;
+    double warm_cpu_ms = 0;
     double cold_ms = 0;
     double bytes_per_point = 0;
 };
@@ -101,15 +112,17 @@ struct Measure {
 Measure measure(const std::string& path, std::size_t n, std::size_t expected_normals)
 {
     Measure m;
-    std::vector<double> times;
+    std::vector<double> times, cpu;
     for (int r = 0; r < 4; ++r) {
         const bool cold = r == 3;
         if (cold) drop_from_cache(path);
         const bool peak = reset_peak();
         const long long before = status_bytes("VmRSS");
+        const double cpu_start = cpu_ms();
         const auto start = PCCD::testing::Clock::now();
         PCCD::Point_data data = PCCD::IO::read_points(path);
         const double ms = PCCD::testing::ms_since(start);
+        const double cpu_used = cpu_ms() - cpu_start;
         const long long high = status_bytes("VmHWM");
         if (data.points.size() != n || data.normals.size() != expected_normals) {
             std::fprintf(stderr, "%s: read %zu points and %zu normals\n", path.c_str(), data.points.size(),
@@ -118,12 +131,16 @@ Measure measure(const std::string& path, std::size_t n, std::size_t expected_nor
         }
         if (cold)
             m.cold_ms = ms;
-        else
+        else {
             times.push_back(ms);
+            cpu.push_back(cpu_used);
+        }
         if (r == 0) m.bytes_per_point = peak ? double(high - before) / double(n) : -1.0;
     }
     std::sort(times.begin(), times.end());
+    std::sort(cpu.begin(), cpu.end());
     m.warm_ms = times[1];
+    m.warm_cpu_ms = cpu[1];
     return m;
 }
 
@@ -154,7 +171,8 @@ int main(int argc, char** argv)
         }
     }
     std::filesystem::create_directories(dir);
-    std::printf("%-10s %-22s %12s %10s %10s %14s\n", "points", "file", "MB", "warm ms", "cold ms", "peak B/point");
+    std::printf("%-10s %-22s %10s %10s %10s %10s %14s\n", "points", "file", "MB", "warm ms", "warm cpu", "cold ms",
+                "peak B/point");
     for (const std::size_t n : sizes) {
         PCCD::Random_engine engine(3);
         PCCD::Point_data data;
@@ -186,8 +204,9 @@ int main(int argc, char** argv)
         for (const File& f : files) {
             const std::string path = stem + f.name;
             const Measure m = measure(path, n, f.normals);
-            std::printf("%-10zu %-22s %12.1f %10.0f %10.0f %14.1f\n", n, f.name.c_str(),
-                        double(std::filesystem::file_size(path)) / 1e6, m.warm_ms, m.cold_ms, m.bytes_per_point);
+            std::printf("%-10zu %-22s %10.1f %10.0f %10.0f %10.0f %14.1f\n", n, f.name.c_str(),
+                        double(std::filesystem::file_size(path)) / 1e6, m.warm_ms, m.warm_cpu_ms, m.cold_ms,
+                        m.bytes_per_point);
             std::fflush(stdout);
             if (!keep) std::filesystem::remove(path);
         }
