@@ -6,11 +6,11 @@
 // read_points on each: the median of 3 reads with the file in the page cache ("warm": wall time,
 // and the process's CPU time, user and system, which other processes on the machine disturb
 // less), and one read after the file's pages were dropped from the cache with
-// posix_fadvise(POSIX_FADV_DONTNEED) ("cold"). Memory: the peak resident set (VmHWM of /proc/self/status, reset before each read by
-// writing 5 to /proc/self/clear_refs) minus the resident set before the read, per point, glibc's
-// mmap threshold fixed at 1 MiB so that freed blocks leave the resident set; 24 bytes per point
-// (48 with normals) is the size of the result itself. The files are synced to the disk before the
-// reads.
+// posix_fadvise(POSIX_FADV_DONTNEED) ("cold"). Memory: the peak resident set (VmHWM of
+// /proc/self/status, reset before each read by writing 5 to /proc/self/clear_refs) minus the
+// resident set before the read, per point, glibc's mmap threshold fixed at 1 MiB so that freed
+// blocks leave the resident set; 24 bytes per point (48 with normals) is the size of the result
+// itself. The files are synced to the disk before the reads.
 //
 // Usage: io_benchmark [--sizes 1000000,10000000] [--dir /tmp/pccd_io_benchmark] [--keep]
 //        (the files are removed at the end unless --keep)

@@ -2,8 +2,9 @@
 // XYZ/PWN file, checked by PCCD so that every unusable file throws PCCD::File_error naming the
 // problem. Binary PLY and XYZ/PWN files are read by PCCD in chunks straight into the result
 // (PCCD/IO/internal/read_ply_binary.h, read_xyz.h); ascii PLY and OFF files are read whole, checked
-// (check_ply.h, check_off.h), then read by CGAL's readers. Implements the reading of points of doc/manual/io.md (format table,
-// "Functions", "Normals are read as stored", "Meshes as points", "Errors").
+// (check_ply.h, check_off.h), then read by CGAL's readers. Implements the reading of points of
+// doc/manual/io.md (format table, "Functions", "Normals are read as stored", "Meshes as points",
+// "Errors", "How it works").
 #pragma once
 
 #include <PCCD/Error.h>

@@ -1,7 +1,7 @@
-// PCCD/IO/internal/check_xyz.h -- PCCD's strict check of an XYZ/PWN file, line by line, as
-// read_xyz.h reads it (doc/manual/io.md, the XYZ row of the format table and "Errors"): an optional point count on
-// line 1, then 3 or 6 finite numbers per line, the same on every line, '#' comments. Every
-// problem is a File_error naming the line. This header does not include CGAL.
+// PCCD/IO/internal/check_xyz.h -- PCCD's strict check of an XYZ/PWN file, line by line as
+// read_xyz.h reads it (doc/manual/io.md, the XYZ row of the format table and "Errors"): an
+// optional point count on line 1, then 3 or 6 finite numbers per line, the same on every line,
+// '#' comments. Every problem is a File_error naming the line. This header does not include CGAL.
 #pragma once
 
 #include <PCCD/IO/internal/finite_checks.h>

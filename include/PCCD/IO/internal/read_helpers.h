@@ -1,8 +1,9 @@
 // PCCD/IO/internal/read_helpers.h -- what every PCCD reader does around the check of its format
 // (doc/manual/io.md, "Functions" and "How it works"): open the file, or load the whole of it into
-// memory, with a File_error for a missing, unreadable or empty one, choose the format from the extension, hint at
-// the format a misnamed file seems to be in, make a checked ascii file easy on CGAL's line readers,
-// and report a CGAL reader that disagrees with the checks. This header does not include CGAL.
+// memory, with a File_error for a missing, unreadable or empty one; choose the format from the
+// extension; hint at the format a misnamed file seems to be in; make a checked ascii file easy on
+// CGAL's line readers; and report a CGAL reader that disagrees with the checks. This header does
+// not include CGAL.
 #pragma once
 
 #include <PCCD/Error.h>
