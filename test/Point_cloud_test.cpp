@@ -99,6 +99,24 @@ TEMPLATE_TEST_CASE("kd-tree queries equal brute force", "[point_cloud]", float, 
     }
 }
 
+TEMPLATE_TEST_CASE("a kd-tree's memory is its coordinates, its permutation and its nodes", "[point_cloud]", float, double)
+{
+    // Lower bound: the copy of the coordinates (3 N FT), one 32-bit index per point, and at least
+    // N / leaf_size leaves of at least two pointers each (a node holds its children or its range).
+    // Upper bound: at most 2 N nodes of at most 64 bytes, and the pool's unused tail (one block).
+    PCCD::Random_engine rng(21);
+    for (const int n : {1000, 20000}) {
+        for (const std::size_t leaf : {std::size_t(1), std::size_t(10), std::size_t(64)}) {
+            INFO("N = " << n << ", leaf size " << leaf);
+            const PCCD::Kd_tree<TestType> tree(make_cloud<TestType>("random", n, rng), leaf);
+            const std::size_t N = std::size_t(n);
+            const std::size_t fixed = 3 * N * sizeof(TestType) + 4 * N;
+            CHECK(tree.memory_bytes() >= fixed + 2 * sizeof(void*) * (N / leaf));
+            CHECK(tree.memory_bytes() <= fixed + 2 * N * 64 + 64 * 1024);
+        }
+    }
+}
+
 TEST_CASE("k larger than the cloud returns every point", "[point_cloud]")
 {
     Coords<double> c(3, 3);

@@ -125,6 +125,12 @@ public:
 
     std::size_t size() const { return static_cast<std::size_t>(m_impl->coords.cols()); }
     const Coordinates& coordinates() const { return m_impl->coords; }
+    /// Heap bytes held by the tree: its copy of the coordinates (3 N FT), the index's permutation
+    /// of the points (N 32-bit indices) and its nodes (nanoflann's pool, with its unused tails).
+    std::size_t memory_bytes() const
+    {
+        return static_cast<std::size_t>(m_impl->coords.size()) * sizeof(FT) + m_impl->index.usedMemory(m_impl->index);
+    }
 
     /// The `k` nearest points to `query` (fewer if the tree holds fewer), sorted by
     /// (squared distance, index), written into `out` (cleared first). O(k log N) expected.

@@ -28,9 +28,10 @@ auto Point_cloud_object<K>::make_data(Point_cloud<K> cloud, std::shared_ptr<cons
     // The hierarchy's reach of a point is its domain radius: f is defined only that close to it
     // (doc/manual/hierarchy.md). Without a domain the hierarchy has no reaches (queries walk it flat).
     const Eigen::VectorXd reach = domain;
-    Geodesic_surface geodesic(Geodesic_distance<K>(cloud, cpsp), weight, normals, domain, options.surface_fit);
-    Euclidean_surface euclidean(Euclidean_distance<K>(cloud), weight, std::move(normals), std::move(domain),
-                                options.surface_fit);
+    // The two surfaces share the normals and the domain radii (one copy of each).
+    Geodesic_surface geodesic(Geodesic_distance<K>(cloud, cpsp), weight, std::move(normals), std::move(domain),
+                              options.surface_fit);
+    Euclidean_surface euclidean = geodesic.with_distance(Euclidean_distance<K>(cloud));
     internal::Stage_timer stage(options, Preprocessing_stage::hierarchy, cloud.size());
     Point_cloud_hierarchy hierarchy = layout ? Point_cloud_hierarchy(*layout, cloud.coordinates(), reach, options.hierarchy.threads)
                                              : Point_cloud_hierarchy(cloud.coordinates(), reach, options.hierarchy);

@@ -412,6 +412,40 @@ TEST_CASE("evaluation at a cloud point by index equals evaluation at its positio
     }
 }
 
+TEST_CASE("a surface over another distance shares the normals and equals one built with copies", "[surface]")
+{
+    // Truth: the same surface built by the constructor from copies of the normals and domain radii.
+    const auto sample = sample_shape(test_torus(), 3000, 0.0, 51);
+    const Object object(columns(sample.points));
+    const auto& geodesic = object.surface();
+    const PCCD::Euclidean_distance<> euclidean_distance(object.cloud());
+    const auto shared = geodesic.with_distance(euclidean_distance);
+    const PCCD::WLS_surface<PCCD::Euclidean_distance<>> copied(euclidean_distance, geodesic.weight(), geodesic.normals(),
+                                                                geodesic.domain_radii(), geodesic.fit());
+    CHECK(&shared.normals() == &geodesic.normals());
+    CHECK(&shared.domain_radii() == &geodesic.domain_radii());
+    CHECK(shared.support_radius() == geodesic.support_radius());
+    CHECK(shared.fit() == geodesic.fit());
+    // The object's own Euclidean surface is made this way: one copy of the normals and radii.
+    CHECK(&object.euclidean_surface().normals() == &geodesic.normals());
+    CHECK(&object.euclidean_surface().domain_radii() == &geodesic.domain_radii());
+    const double s = object.cloud().mean_spacing();
+    std::size_t defined = 0;
+    for (const Query& q : queries_near(test_torus(), 300, 2.0 * s, 53)) {
+        const auto a = shared.evaluate(q.x);
+        const auto b = copied.evaluate(q.x);
+        REQUIRE(a.status == b.status);
+        if (!a.defined()) continue;
+        ++defined;
+        CHECK(a.value == b.value);
+        CHECK(object.euclidean_surface().evaluate(q.x).value == b.value);
+    }
+    CHECK(defined > 250);
+    // A distance over another cloud is refused as by the constructor.
+    const PCCD::Point_cloud<> other(sample_shape(unit_sphere(), 500, 0.0, 1).points);
+    CHECK_THROWS_WITH(geodesic.with_distance(PCCD::Euclidean_distance<>(other)), Catch::Contains("given for 500 points"));
+}
+
 TEST_CASE("float clouds evaluate the same surface", "[surface]")
 {
     const auto sample = sample_shape(unit_sphere(), 4000, 0.0, 41);

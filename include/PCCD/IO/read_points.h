@@ -1,8 +1,10 @@
 // PCCD/IO/read_points.h -- reads a point cloud (points and, if present, normals) from a PLY, OFF or
-// XYZ/PWN file through CGAL's readers, after PCCD's own check of the format (PCCD/IO/internal/
-// check_ply.h, check_off.h, check_xyz.h), so that every unusable file throws PCCD::File_error
-// naming the problem. Implements the reading of points of doc/manual/io.md (format table,
-// "Functions", "Normals are read as stored", "Meshes as points", "Errors").
+// XYZ/PWN file, checked by PCCD so that every unusable file throws PCCD::File_error naming the
+// problem. Binary PLY and XYZ/PWN files are read by PCCD in chunks straight into the result
+// (PCCD/IO/internal/read_ply_binary.h, read_xyz.h); ascii PLY and OFF files are read whole, checked
+// (check_ply.h, check_off.h), then read by CGAL's readers. Implements the reading of points of
+// doc/manual/io.md (format table, "Functions", "Normals are read as stored", "Meshes as points",
+// "Errors", "How it works").
 #pragma once
 
 #include <PCCD/Error.h>
@@ -10,17 +12,18 @@
 #include <PCCD/IO/Point_data.h>
 #include <PCCD/IO/internal/check_off.h>
 #include <PCCD/IO/internal/check_ply.h>
-#include <PCCD/IO/internal/check_xyz.h>
 #include <PCCD/IO/internal/read_helpers.h>
+#include <PCCD/IO/internal/read_ply_binary.h>
+#include <PCCD/IO/internal/read_xyz.h>
 
 #include <CGAL/IO/OFF.h>
 #include <CGAL/IO/read_ply_points.h>
-#include <CGAL/IO/read_xyz_points.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/property_map.h>
 
 #include <cstddef>
 #include <iterator>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -44,9 +47,15 @@ namespace PCCD::IO {
 ///         number" (with the line), a NaN or infinite coordinate (with the vertex or point index, and
 ///         the line for ascii), "no points", "inconsistent normals", a face vertex "out of range",
 ///         "unexpected data" after the declared content, "unsupported" variants.
-/// Complexity: O(file size); the file is held in memory while it is read.
+/// Complexity: O(file size). Memory: a binary PLY or an XYZ/PWN file is read in chunks of about
+/// 1 MiB into the result, which is reserved once (from the header's vertex count for PLY, checked
+/// against the file size first); an ascii PLY or an OFF file is held in memory while it is read.
 inline Point_data read_points(const std::string& path, Format format)
 {
+    if (format == Format::xyz) return internal::read_xyz_points(path);
+    if (format == Format::ply)
+        if (std::optional<Point_data> data = internal::read_binary_ply_points(path)) return std::move(*data);
+
     using Kernel = CGAL::Simple_cartesian<double>;
     using Point_3 = Kernel::Point_3;
     using Vector_3 = Kernel::Vector_3;
@@ -94,15 +103,8 @@ inline Point_data read_points(const std::string& path, Format format)
         ok = read_with_normals([&](auto out, const auto& np) { return CGAL::IO::read_PLY(in, out, np); });
         break;
     }
-    case Format::xyz: {
-        const internal::Xyz_summary summary = internal::check_xyz(path, text);
-        expected = summary.points;
-        has_normals = summary.normals;
-        internal::prepare_ascii_for_cgal(text);
-        std::istringstream in(std::move(text));
-        ok = read_with_normals([&](auto out, const auto& np) { return CGAL::IO::read_XYZ(in, out, np); });
+    case Format::xyz: // read above
         break;
-    }
     }
     if (!ok) internal::cgal_disagrees(path, format, "it returned false");
     if (points.size() != expected || normals.size() != (has_normals ? expected : 0))

@@ -126,38 +126,20 @@ public:
     ///        reads the stored normals of the neighbours, so they must be consistently oriented.
     WLS_surface(Distance distance, Weight weight, Eigen::Matrix3Xd normals, Eigen::VectorXd domain_radii = {},
                 Surface_fit fit = Surface_fit::plane)
-        : m_distance(std::move(distance)),
-          m_weight(std::move(weight)),
-          m_support(double(m_weight.support_radius())),
-          m_normals(std::make_shared<const Eigen::Matrix3Xd>(std::move(normals))),
-          m_domain(std::make_shared<const Eigen::VectorXd>(std::move(domain_radii))),
-          m_fit(fit)
+        : WLS_surface(std::move(distance), std::move(weight), std::make_shared<const Eigen::Matrix3Xd>(std::move(normals)),
+                      std::make_shared<const Eigen::VectorXd>(std::move(domain_radii)), fit)
     {
-        if (fit != Surface_fit::plane && fit != Surface_fit::sphere)
-            throw Invalid_input(internal::concat("WLS surface: unknown surface fit ", int(fit)));
-        if (m_domain->size() != 0 && std::size_t(m_domain->size()) != m_distance.size())
-            throw Invalid_input(internal::concat("WLS surface: ", m_domain->size(), " domain radii given for ",
-                                                 m_distance.size(), " points"));
-        for (Eigen::Index i = 0; i < m_domain->size(); ++i)
-            if (!std::isgreater((*m_domain)(i), 0.0))
-                throw Invalid_input(internal::concat("WLS surface: the domain radius of point ", i, " is ",
-                                                     (*m_domain)(i), "; it must be > 0"));
-        if (std::size_t(m_normals->cols()) != m_distance.size())
-            throw Invalid_input(internal::concat("WLS surface: ", m_normals->cols(), " normals given for ",
-                                                 m_distance.size(), " points"));
-        if (!internal::all_finite(*m_normals))
-            for (Eigen::Index i = 0; i < m_normals->cols(); ++i)
-                if (!internal::all_finite(m_normals->col(i)))
-                    throw Invalid_input(internal::concat("WLS surface: the normal of point ", i, " is not finite"));
-        if (!(std::isfinite(m_support) && m_support > 0.0))
-            throw Invalid_input(internal::concat("WLS surface: support radius ", m_support, " must be finite and > 0"));
-        // The relative slack absorbs rounding: h sqrt(-ln theta_eps) with h = eta r / sqrt(-ln theta_eps)
-        // may exceed eta r, the bound of a CPSP map, by an ulp.
-        if (m_support > double(m_distance.max_radius()) * (1.0 + 1e-12))
-            throw Invalid_input(internal::concat("WLS surface: the kernel's support radius ", m_support,
-                                                 " exceeds the largest radius the distance policy answers (",
-                                                 double(m_distance.max_radius()),
-                                                 "); build the geodesic map with a bound >= the support radius"));
+    }
+
+    /// The same surface over another distance policy of the same points (a Euclidean_distance for a
+    /// Geodesic_distance, say): the same weight, fit, normals and domain radii, shared by the two
+    /// surfaces instead of copied.
+    /// \throws Invalid_input as the constructor: a distance over another number of points, or one
+    ///         whose max_radius() is below the weight's support radius.
+    template <SurfaceDistance Other>
+    WLS_surface<Other, Weight> with_distance(Other distance) const
+    {
+        return WLS_surface<Other, Weight>(std::move(distance), m_weight, m_normals, m_domain, m_fit);
     }
 
     /// \name Evaluation
@@ -232,6 +214,46 @@ public:
     /// @}
 
 private:
+    template <SurfaceDistance, SurfaceWeight>
+    friend class WLS_surface;
+
+    /// The constructor's work, with the normals and domain radii already held (and maybe shared).
+    WLS_surface(Distance distance, Weight weight, std::shared_ptr<const Eigen::Matrix3Xd> normals,
+                std::shared_ptr<const Eigen::VectorXd> domain_radii, Surface_fit fit)
+        : m_distance(std::move(distance)),
+          m_weight(std::move(weight)),
+          m_support(double(m_weight.support_radius())),
+          m_normals(std::move(normals)),
+          m_domain(std::move(domain_radii)),
+          m_fit(fit)
+    {
+        if (fit != Surface_fit::plane && fit != Surface_fit::sphere)
+            throw Invalid_input(internal::concat("WLS surface: unknown surface fit ", int(fit)));
+        if (m_domain->size() != 0 && std::size_t(m_domain->size()) != m_distance.size())
+            throw Invalid_input(internal::concat("WLS surface: ", m_domain->size(), " domain radii given for ",
+                                                 m_distance.size(), " points"));
+        for (Eigen::Index i = 0; i < m_domain->size(); ++i)
+            if (!std::isgreater((*m_domain)(i), 0.0))
+                throw Invalid_input(internal::concat("WLS surface: the domain radius of point ", i, " is ",
+                                                     (*m_domain)(i), "; it must be > 0"));
+        if (std::size_t(m_normals->cols()) != m_distance.size())
+            throw Invalid_input(internal::concat("WLS surface: ", m_normals->cols(), " normals given for ",
+                                                 m_distance.size(), " points"));
+        if (!internal::all_finite(*m_normals))
+            for (Eigen::Index i = 0; i < m_normals->cols(); ++i)
+                if (!internal::all_finite(m_normals->col(i)))
+                    throw Invalid_input(internal::concat("WLS surface: the normal of point ", i, " is not finite"));
+        if (!(std::isfinite(m_support) && m_support > 0.0))
+            throw Invalid_input(internal::concat("WLS surface: support radius ", m_support, " must be finite and > 0"));
+        // The relative slack absorbs rounding: h sqrt(-ln theta_eps) with h = eta r / sqrt(-ln theta_eps)
+        // may exceed eta r, the bound of a CPSP map, by an ulp.
+        if (m_support > double(m_distance.max_radius()) * (1.0 + 1e-12))
+            throw Invalid_input(internal::concat("WLS surface: the kernel's support radius ", m_support,
+                                                 " exceeds the largest radius the distance policy answers (",
+                                                 double(m_distance.max_radius()),
+                                                 "); build the geodesic map with a bound >= the support radius"));
+    }
+
     struct Sums {
         internal::Wls_sums plane;
         internal::Sphere_sums sphere;

@@ -142,9 +142,12 @@ inline void check_ply_ascii_body(const std::string& path, Line_cursor& lines, co
                       " declared in the header"));
 }
 
-/// Checks item `j` of element `e`, read from `in`; `nv`: the vertex count.
-inline void check_ply_binary_item(const std::string& path, Ply_bytes& in, const Ply_element& e, std::uint64_t j,
-                                  std::uint64_t nv, bool has_normals)
+/// Checks item `j` of element `e`, read from `in` (Ply_bytes, or the chunked Ply_stream of
+/// read_ply_binary.h); `nv`: the vertex count. `values`, if not null, receives the coordinates and
+/// then the normal of a vertex (6 values).
+template <class Bytes>
+void check_ply_binary_item(const std::string& path, Bytes& in, const Ply_element& e, std::uint64_t j,
+                           std::uint64_t nv, bool has_normals, double* values = nullptr)
 {
     double coordinates[3] = {}, normal[3] = {};
     for (const Ply_property& p : e.properties) {
@@ -167,6 +170,11 @@ inline void check_ply_binary_item(const std::string& path, Ply_bytes& in, const 
             ply_check_index(path, j, 0, in.read(p.type), nv);
     }
     ply_check_item(path, e, j, 0, coordinates, normal, has_normals);
+    if (values)
+        for (int k = 0; k < 3; ++k) {
+            values[k] = coordinates[k];
+            values[3 + k] = normal[k];
+        }
 }
 
 /// Checks a binary body (`body`: the bytes after the header): every item complete, nothing after.

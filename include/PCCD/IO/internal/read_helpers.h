@@ -1,8 +1,9 @@
 // PCCD/IO/internal/read_helpers.h -- what every PCCD reader does around the check of its format
-// (doc/manual/io.md, "Functions" and "How it works"): load the whole file into memory with a
-// File_error for a missing, unreadable or empty one, choose the format from the extension, hint at
-// the format a misnamed file seems to be in, make a checked ascii file easy on CGAL's line readers,
-// and report a CGAL reader that disagrees with the checks. This header does not include CGAL.
+// (doc/manual/io.md, "Functions" and "How it works"): open the file, or load the whole of it into
+// memory, with a File_error for a missing, unreadable or empty one; choose the format from the
+// extension; hint at the format a misnamed file seems to be in; make a checked ascii file easy on
+// CGAL's line readers; and report a CGAL reader that disagrees with the checks. This header does
+// not include CGAL.
 #pragma once
 
 #include <PCCD/Error.h>
@@ -10,6 +11,8 @@
 #include <PCCD/IO/internal/text_scanner.h>
 
 #include <cerrno>
+#include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -39,9 +42,9 @@ inline std::string looks_like(std::string_view first_token)
     return "";
 }
 
-/// The whole content of the file `path`. Throws File_error if it is missing, a directory,
-/// unreadable or empty.
-inline std::string load_file(const std::string& path)
+/// Opens the file `path` for binary reading. Throws File_error if it is missing, a directory or
+/// unreadable.
+inline std::ifstream open_file(const std::string& path)
 {
     namespace fs = std::filesystem;
     std::error_code ec;
@@ -56,6 +59,33 @@ inline std::string load_file(const std::string& path)
         fail(path, concat("cannot open the file for reading",
                           error != 0 ? concat(" (", std::strerror(error), ')') : std::string()));
     }
+    return in;
+}
+
+/// The size in bytes of the regular file `path`, or nothing for another kind of file (a pipe, a
+/// device), whose size is only known once it is read.
+inline std::optional<std::uintmax_t> regular_file_size(const std::string& path)
+{
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) return std::nullopt;
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    if (ec) return std::nullopt;
+    return size;
+}
+
+/// Up to `n` bytes of `in` into `out`; the number read. Throws File_error on an input error.
+inline std::size_t read_some(const std::string& path, std::ifstream& in, char* out, std::size_t n)
+{
+    in.read(out, static_cast<std::streamsize>(n));
+    if (in.bad()) fail(path, "cannot read the file (input error)");
+    return static_cast<std::size_t>(in.gcount());
+}
+
+/// The whole content of the file `path`. Throws File_error if it is missing, a directory,
+/// unreadable or empty.
+inline std::string load_file(const std::string& path)
+{
+    std::ifstream in = open_file(path);
     std::string data;
     char buffer[1 << 16];
     while (in.read(buffer, sizeof buffer) || in.gcount() > 0) data.append(buffer, static_cast<std::size_t>(in.gcount()));
