@@ -44,6 +44,8 @@
 
 #include <nanoflann.hpp>
 
+#include <malloc.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -180,9 +182,14 @@ std::array<double, 2> memory_mib()
     return m;
 }
 
-/// Resets the peak (VmHWM) to the current resident memory, so that the next peak is that of what
-/// follows (Linux: "5" to /proc/self/clear_refs).
-void reset_peak_memory() { std::ofstream("/proc/self/clear_refs") << "5"; }
+/// Returns the free heap pages to the system (so that what follows cannot reuse pages that are
+/// already resident and go uncounted), then resets the peak (VmHWM) to the current resident
+/// memory, so that the next peak is that of what follows (Linux: "5" to /proc/self/clear_refs).
+void reset_peak_memory()
+{
+    malloc_trim(0);
+    std::ofstream("/proc/self/clear_refs") << "5";
+}
 
 enum Method { kd, kd_cap, pccd, method_count };
 const std::array<const char*, method_count> method_names{"kd", "kd_cap", "pccd"};

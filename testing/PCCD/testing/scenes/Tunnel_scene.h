@@ -123,7 +123,8 @@ struct Tunnel_scene_options {
     /// The target clearances of those poses (pan head to the vault circle), used in turn; default
     /// 1, 2.5, 4 and 7 cm. Each must be in (0, the centred clearance).
     std::vector<double> offset_clearances = {0.01, 0.025, 0.04, 0.07};
-    /// Seed of the samples, holes and outliers; default 1.
+    /// Seed of the samples, holes and outliers; default 1. The wagon's cloud is drawn from an engine
+    /// of its own (seed + 0x5741474f4e), so it is the same whatever the tunnel's options.
     std::uint64_t seed = 1;
 };
 
@@ -511,7 +512,9 @@ inline Tunnel_scene make_tunnel_scene(const Tunnel_scene_options& options = {})
         if (s.triangles[0] >= scene.wall_triangles || p.z() > 2.5 || in_hole(p)) continue;
         scene.tunnel_points.col(Eigen::Index(surface_points + made++)) = p + sign * offset * Eigen::Vector3d(s.normals.col(0));
     }
-    scene.wagon_points = sample_kept(wagon, o.wagon_points, scene.wagon_sigma, engine,
+    // The wagon has an engine of its own, so that its cloud does not depend on the tunnel's options.
+    Random_engine wagon_engine(o.seed + 0x5741474f4eULL);
+    scene.wagon_points = sample_kept(wagon, o.wagon_points, scene.wagon_sigma, wagon_engine,
                                      [](const Eigen::Vector3d&, std::size_t) { return true; });
 
     // Path.
