@@ -1,5 +1,5 @@
 // PCCD/testing/scenes/Tunnel_scene.h -- the scanned-tunnel clearance scene of benchmark/
-// clearance_benchmark.cpp (doc/benchmarks.md, "Clearance through a scanned tunnel"): the rail
+// tunnel_clearance_benchmark.cpp (doc/benchmarks.md, "Clearance through a scanned tunnel"): the rail
 // clearance (gauge) check of a wagon scan moved through a tunnel scan with a safety margin of a
 // few centimetres. Everything is built as a triangle mesh first (the exact truth) and then sampled
 // by area as a scanner would see it: the tunnel with Gaussian noise, clutter on the walls (cables,

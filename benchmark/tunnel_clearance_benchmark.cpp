@@ -1,11 +1,11 @@
-// benchmark/clearance_benchmark.cpp -- the rail clearance (gauge) check on a scanned tunnel: a wagon
+// benchmark/tunnel_clearance_benchmark.cpp -- the rail clearance (gauge) check on a scanned tunnel: a wagon
 // scan moved along a path through a tunnel scan (PCCD/testing/scenes/Tunnel_scene.h), its clearance
 // measured per pose by PCCD::distance with a cap, by the practitioners' kd-tree method (a nanoflann
 // kd-tree over the tunnel points, the nearest tunnel point of every posed wagon point), and exactly
 // on the meshes the clouds were sampled from (PCCD::exact_distance). Results and the commands are
 // in doc/benchmarks.md, "Clearance through a scanned tunnel".
 //
-//   clearance_benchmark [--scene-points 1000000] [--wagon-points 100000] [--poses 60] [--margin 0.05]
+//   tunnel_clearance_benchmark [--scene-points 1000000] [--wagon-points 100000] [--poses 60] [--margin 0.05]
 //                       [--cap 0.2] [--seed 1] [--threads T] [--repetitions 5] [--write-scene DIR]
 //                       [--csv FILE]
 //
@@ -427,13 +427,13 @@ int main(int argc, char** argv)
 {
     try {
         const Arguments args = parse(argc, argv);
-        std::printf("clearance_benchmark: %zu scene points, %zu wagon points, %zu poses, margin %.3f m, cap %.3f m, seed %llu, "
+        std::printf("tunnel_clearance_benchmark: %zu scene points, %zu wagon points, %zu poses, margin %.3f m, cap %.3f m, seed %llu, "
                     "%d repetitions (warm)\n",
                     args.scene_points, args.wagon_points, args.poses, args.margin, args.cap,
                     (unsigned long long)args.seed, args.repetitions);
         run(args);
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "clearance_benchmark: %s\n", e.what());
+        std::fprintf(stderr, "tunnel_clearance_benchmark: %s\n", e.what());
         return 1;
     }
     return 0;
