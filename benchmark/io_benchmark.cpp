@@ -33,29 +33,15 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+
+#include <PCCD/testing/process_memory.h>
 #include <string>
 #include <vector>
 
 namespace {
 
-/// A field of /proc/self/status in bytes ("VmRSS", "VmHWM"); 0 if missing.
-long long status_bytes(const char* field)
-{
-    std::ifstream in("/proc/self/status");
-    const std::string key = std::string(field) + ":";
-    for (std::string line; std::getline(in, line);)
-        if (line.rfind(key, 0) == 0) return std::atoll(line.c_str() + key.size()) * 1024;
-    return 0;
-}
-
-/// Resets VmHWM to the current resident set (Linux >= 4.0); false if not allowed.
-bool reset_peak()
-{
-    std::ofstream out("/proc/self/clear_refs");
-    out << "5";
-    out.flush();
-    return bool(out);
-}
+using PCCD::testing::reset_peak;
+using PCCD::testing::status_bytes;
 
 /// The CPU time of the process (user and system) in ms.
 double cpu_ms()

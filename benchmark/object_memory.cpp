@@ -26,26 +26,14 @@
 #include <fstream>
 #include <optional>
 #include <string>
+
+#include <PCCD/testing/process_memory.h>
 #include <vector>
 
 namespace {
 
-/// A field of /proc/self/status in bytes ("VmRSS", "VmHWM"); 0 if missing.
-long long status_bytes(const char* field)
-{
-    std::ifstream in("/proc/self/status");
-    const std::string key = std::string(field) + ":";
-    for (std::string line; std::getline(in, line);)
-        if (line.rfind(key, 0) == 0) return std::atoll(line.c_str() + key.size()) * 1024;
-    return 0;
-}
-
-/// Resets VmHWM to the current resident set (Linux >= 4.0).
-void reset_peak()
-{
-    std::ofstream out("/proc/self/clear_refs");
-    out << "5";
-}
+using PCCD::testing::reset_peak;
+using PCCD::testing::status_bytes;
 
 struct Stage_row {
     PCCD::Preprocessing_stage stage;

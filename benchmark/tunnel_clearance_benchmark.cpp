@@ -32,6 +32,7 @@
 // fraction within 0.5 spacings, signed median); and per pose whether each method puts the wagon
 // below the margin, against the exact verdict.
 #include <PCCD/testing/csv.h>
+#include <PCCD/testing/process_memory.h>
 #include <PCCD/testing/scenes/Tunnel_scene.h>
 #include <PCCD/testing/statistics.h>
 #include <PCCD/testing/timing.h>
@@ -170,26 +171,15 @@ double pccd_clearance(const PCCD::Distance_result& r)
     return std::nan("");
 }
 
-/// Resident memory of this process (VmRSS) and its peak (VmHWM) in MiB, from /proc/self/status.
+/// Resident memory of this process (VmRSS) and its peak (VmHWM) in MiB.
 std::array<double, 2> memory_mib()
 {
-    std::ifstream in("/proc/self/status");
-    std::array<double, 2> m{std::nan(""), std::nan("")};
-    for (std::string line; std::getline(in, line);) {
-        if (line.rfind("VmRSS:", 0) == 0) m[0] = std::stod(line.substr(6)) / 1024.0;
-        if (line.rfind("VmHWM:", 0) == 0) m[1] = std::stod(line.substr(6)) / 1024.0;
-    }
-    return m;
+    return {double(PCCD::testing::status_bytes("VmRSS")) / 1048576.0, double(PCCD::testing::status_bytes("VmHWM")) / 1048576.0};
 }
 
-/// Returns the free heap pages to the system (so that what follows cannot reuse pages that are
-/// already resident and go uncounted), then resets the peak (VmHWM) to the current resident
-/// memory, so that the next peak is that of what follows (Linux: "5" to /proc/self/clear_refs).
-void reset_peak_memory()
-{
-    malloc_trim(0);
-    std::ofstream("/proc/self/clear_refs") << "5";
-}
+/// Returns the free heap pages to the system, then resets the peak (VmHWM) to the current resident
+/// memory, so that the next peak is that of what follows.
+void reset_peak_memory() { PCCD::testing::reset_peak(true); }
 
 enum Method { kd, kd_cap, pccd, method_count };
 const std::array<const char*, method_count> method_names{"kd", "kd_cap", "pccd"};
