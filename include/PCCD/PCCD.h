@@ -99,8 +99,11 @@
 #include <PCCD/Intersection/do_intersect_many.h>
 #include <PCCD/Intersection/ray_intersection.h>
 #include <PCCD/Intersection/refinement.h>
+#include <PCCD/Proximity/Clearance_options.h>
+#include <PCCD/Proximity/Clearance_profile.h>
 #include <PCCD/Proximity/Distance_options.h>
 #include <PCCD/Proximity/Distance_result.h>
+#include <PCCD/Proximity/clearance.h>
 #include <PCCD/Proximity/contacts.h>
 #include <PCCD/Proximity/distance.h>
 #include <PCCD/Proximity/distance_many.h>
