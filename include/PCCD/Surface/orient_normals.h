@@ -2,9 +2,9 @@
 // sign of the implicit surface (doc/algorithms.md, "Normal orientation"): propagation along a
 // minimum spanning tree of the proximity graph (Hoppe et al. 1992), whose edge weights and sign
 // rule compare the two normals mirrored across the plane that bisects the edge, so that the two
-// faces of a thin part keep opposite normals; one tree per connected component; the same with hints (normals read from a file, some of
-// them possibly missing) that decide the sign where they exist; or orientation like a complete set
-// of reference normals.
+// faces of a thin part keep opposite normals; one tree per connected component; the same with
+// hints (normals read from a file, some of them possibly missing) that decide the sign where they
+// exist; or orientation like a complete set of reference normals.
 #pragma once
 
 #include <algorithm>
@@ -155,13 +155,9 @@ void propagate_signs(const Graph& g, const Eigen::MatrixBase<Positions>& positio
         if (get(is_virtual, e)) return from;
         return static_cast<std::uint32_t>(target(e, g));
     };
-    // How n_w agrees with n_v along the edge (v, w): n_w . R n_v, R the reflection across the plane
-    // that bisects the edge (see orientation_agreement()).
-    const auto agreement = [&](const Eigen::Vector3d& nv, const Eigen::Vector3d& nw, std::uint32_t v, std::uint32_t w) {
-        return orientation_agreement(nv, nw, positions.col(w).template cast<double>() - positions.col(v).template cast<double>());
-    };
-    const auto edge_weight = [&](const Eigen::Vector3d& nv, const Eigen::Vector3d& nw, std::uint32_t v, std::uint32_t w) {
-        return orientation_edge_weight(nv, nw, positions.col(w).template cast<double>() - positions.col(v).template cast<double>());
+    // The edge from v to w, p_w - p_v (orientation_agreement() and orientation_edge_weight() read it).
+    const auto edge = [&](std::uint32_t v, std::uint32_t w) -> Eigen::Vector3d {
+        return positions.col(w).template cast<double>() - positions.col(v).template cast<double>();
     };
 
     // One connected component at a time, from its smallest index: first its members (breadth-first),
@@ -177,7 +173,7 @@ void propagate_signs(const Graph& g, const Eigen::MatrixBase<Positions>& positio
         for (auto [e, e_end] = out_edges(v, g); e != e_end; ++e) {
             const std::uint32_t w = followed(*e, v);
             if (w == v || in_tree[w] || !has_normal[w]) continue;
-            heap.emplace(edge_weight(unit.col(v), unit.col(w), v, w), w, v);
+            heap.emplace(orientation_edge_weight(unit.col(v), unit.col(w), edge(v, w)), w, v);
         }
     };
     for (std::size_t root = 0; root < n; ++root) {
@@ -211,7 +207,8 @@ void propagate_signs(const Graph& g, const Eigen::MatrixBase<Positions>& positio
             if (in_tree[v]) continue;
             in_tree[v] = 1;
             order.push_back(v);
-            if (v != parent && agreement(normals.col(parent), normals.col(v), parent, v) < 0.0) normals.col(v) = -normals.col(v);
+            if (v != parent && orientation_agreement(normals.col(parent), normals.col(v), edge(parent, v)) < 0.0)
+                normals.col(v) = -normals.col(v);
             push_edges(v);
         }
         if (!hinted.empty()) continue;
@@ -255,8 +252,9 @@ Orientation_report orient_normals_over_graph(const char* caller, const Graph& g,
 /// minimum spanning tree for the weight orientation_edge_weight() is grown by Prim's algorithm from
 /// the component's smallest index, and each normal takes the sign that agrees with its tree
 /// parent's (orientation_agreement() > 0): orientation flows first across the edges where it is
-/// least ambiguous, and the two faces of a part thinner than the graph's edges keep opposite
-/// normals (the plain rule n_i . n_j > 0 of Hoppe et al. turns one of them inside out). Then the whole component
+/// least ambiguous, and the two faces of a part thinner than the graph's edges, down to about 5
+/// mean spacings, keep opposite normals (the plain rule n_i . n_j > 0 of Hoppe et al. turns one of
+/// them inside out; doc/benchmarks.md "Normal orientation"). Then the whole component
 /// is flipped if sum_i n_i . (p_i - c) < 0, c the centroid of all points: for a closed surface this
 /// sum approximates 3 volume / sampling density > 0 for outward normals, whatever c, so closed
 /// components end up facing outward; open pieces (such as the two faces of a thin plate) face away
