@@ -27,16 +27,18 @@ struct Pose_case {
     PCCD::Rigid_transform_3<double> pose_b;
 };
 
-/// The rows of a --cases CSV: 24 numbers each (T_A then T_B, 3x4 row-major); blank lines and lines
-/// starting with '#' are skipped; the first other line may be a header (its first field is not a
-/// number). Every other problem throws, naming the file and the line.
-inline std::vector<Pose_case> read_cases(const std::string& path)
+/// Calls `row(fields, line)` for each data row of the CSV file `path` (`what`: "cases" or "path",
+/// for the messages): blank lines and lines starting with '#' are skipped, and the first other
+/// line too when its first field is not a number (a header). Throws File_error when the file
+/// cannot be opened.
+template <class Row>
+void for_each_csv_row(const std::string& path, const char* what, Row&& row)
 {
     std::ifstream in(path);
     if (!in)
-        throw PCCD::File_error(path, std::filesystem::exists(path) ? "cannot open the cases file"
-                                                                   : "cannot open the cases file: it does not exist (missing file)");
-    std::vector<Pose_case> cases;
+        throw PCCD::File_error(path, std::filesystem::exists(path)
+                                         ? std::string("cannot open the ") + what + " file"
+                                         : std::string("cannot open the ") + what + " file: it does not exist (missing file)");
     bool first_row = true;
     std::string text;
     for (std::size_t line = 1; std::getline(in, text); ++line) {
@@ -45,6 +47,17 @@ inline std::vector<Pose_case> read_cases(const std::string& path)
         const bool header = first_row && !parse_number(fields.front());
         first_row = false;
         if (header) continue;
+        row(fields, line);
+    }
+}
+
+/// The rows of a --cases CSV: 24 numbers each (T_A then T_B, 3x4 row-major); blank lines and lines
+/// starting with '#' are skipped; the first other line may be a header (its first field is not a
+/// number). Every other problem throws, naming the file and the line.
+inline std::vector<Pose_case> read_cases(const std::string& path)
+{
+    std::vector<Pose_case> cases;
+    for_each_csv_row(path, "cases", [&](const std::vector<std::string>& fields, std::size_t line) {
         const std::string where = path + ":" + std::to_string(line);
         if (fields.size() != 24)
             throw PCCD::Invalid_input(where + ": expected 24 numbers (T_A then T_B, 3x4 row-major each), got " +
@@ -52,7 +65,7 @@ inline std::vector<Pose_case> read_cases(const std::string& path)
         PCCD::Rigid_transform_3<double> pose_a = make_transform(fields, 0, where + ": T_A");
         PCCD::Rigid_transform_3<double> pose_b = make_transform(fields, 12, where + ": T_B");
         cases.push_back({line, pose_a, pose_b});
-    }
+    });
     if (cases.empty()) throw PCCD::Invalid_input(path + ": no cases (expected rows of 24 numbers)");
     return cases;
 }
@@ -71,19 +84,8 @@ struct Motion_case {
 /// lines, an optional header; every other problem throws, naming the file and the line).
 inline std::vector<Motion_case> read_motion_cases(const std::string& path, bool orthonormalize = false)
 {
-    std::ifstream in(path);
-    if (!in)
-        throw PCCD::File_error(path, std::filesystem::exists(path) ? "cannot open the cases file"
-                                                                   : "cannot open the cases file: it does not exist (missing file)");
     std::vector<Motion_case> cases;
-    bool first_row = true;
-    std::string text;
-    for (std::size_t line = 1; std::getline(in, text); ++line) {
-        const std::vector<std::string> fields = split_fields(text);
-        if (fields.empty() || fields.front().front() == '#') continue;
-        const bool header = first_row && !parse_number(fields.front());
-        first_row = false;
-        if (header) continue;
+    for_each_csv_row(path, "cases", [&](const std::vector<std::string>& fields, std::size_t line) {
         const std::string where = path + ":" + std::to_string(line);
         if (fields.size() != 48)
             throw PCCD::Invalid_input(where + ": expected 48 numbers (A at t = 0, A at t = 1, B at t = 0, B at t = 1; "
@@ -92,7 +94,7 @@ inline std::vector<Motion_case> read_motion_cases(const std::string& path, bool 
                          make_transform(fields, 12, where + ": A at t = 1", orthonormalize),
                          make_transform(fields, 24, where + ": B at t = 0", orthonormalize),
                          make_transform(fields, 36, where + ": B at t = 1", orthonormalize)});
-    }
+    });
     if (cases.empty()) throw PCCD::Invalid_input(path + ": no cases (expected rows of 48 numbers)");
     return cases;
 }
@@ -103,25 +105,14 @@ inline std::vector<Motion_case> read_motion_cases(const std::string& path, bool 
 /// replaced by its nearest rotation (make_transform).
 inline std::vector<PCCD::Rigid_transform_3<double>> read_path(const std::string& path, bool orthonormalize = false)
 {
-    std::ifstream in(path);
-    if (!in)
-        throw PCCD::File_error(path, std::filesystem::exists(path) ? "cannot open the path file"
-                                                                   : "cannot open the path file: it does not exist (missing file)");
     std::vector<PCCD::Rigid_transform_3<double>> poses;
-    bool first_row = true;
-    std::string text;
-    for (std::size_t line = 1; std::getline(in, text); ++line) {
-        const std::vector<std::string> fields = split_fields(text);
-        if (fields.empty() || fields.front().front() == '#') continue;
-        const bool header = first_row && !parse_number(fields.front());
-        first_row = false;
-        if (header) continue;
+    for_each_csv_row(path, "path", [&](const std::vector<std::string>& fields, std::size_t line) {
         const std::string where = path + ":" + std::to_string(line) + ": pose " + std::to_string(poses.size());
         if (fields.size() != 12)
             throw PCCD::Invalid_input(where + ": expected 12 numbers (3x4 row-major [R | t]), got " +
                                       std::to_string(fields.size()) + " fields");
         poses.push_back(make_transform(fields, 0, where, orthonormalize));
-    }
+    });
     if (poses.empty()) throw PCCD::Invalid_input(path + ": no poses (expected rows of 12 numbers)");
     return poses;
 }
