@@ -1,7 +1,7 @@
 // The headers nearly every test program includes (Catch2, Eigen, the object and the queries),
-// precompiled once per build directory and reused by the test programs that do not link CGAL
-// (pccd_add_test in test/CMakeLists.txt; off with -DPCCD_TEST_PCH=OFF). Only a build-time
-// saving: each test still includes what it uses, and the header check of the build
+// precompiled once per build directory, twice: for the test programs without CGAL and for those
+// with CGAL's -frounding-math (pccd_add_test in test/CMakeLists.txt; off with -DPCCD_TEST_PCH=OFF).
+// Only a build-time saving: each test still includes what it uses, and the header check of the build
 // (pccd_header_check) compiles every public header on its own, without this file.
 #pragma once
 

@@ -1,0 +1,1 @@
+// The translation unit that builds a precompiled header of PCCD's programs (cmake/pch/; cmake/PCCDInternalTargets.cmake).
