@@ -84,13 +84,6 @@ PCCD::Clearance_options clearance_options(const Clearance_cli_options& o, double
     return options;
 }
 
-/// A point as [x, y, z], or null when it was not computed (NaN).
-nlohmann::ordered_json vector_json(const Eigen::Vector3d& v)
-{
-    if (!v.allFinite()) return nullptr;
-    return {v.x(), v.y(), v.z()};
-}
-
 nlohmann::ordered_json optional_json(const std::optional<std::size_t>& i)
 {
     return i ? nlohmann::ordered_json(*i) : nlohmann::ordered_json(nullptr);
@@ -103,14 +96,6 @@ nlohmann::ordered_json counters_json(const PCCD::Distance_counters& counters)
     PCCD::for_each_counter(counters.intersection,
                            [&](const char* name, std::size_t value) { out[std::string("intersection_") + name] = value; });
     return out;
-}
-
-nlohmann::ordered_json object_json(const std::string& file, const Prepared_object& prepared)
-{
-    return {{"file", file},
-            {"points", prepared.object.size()},
-            {"sampling_radius", prepared.object.sampling_radius()},
-            {"preprocess_ms", prepared.preprocess_ms}};
 }
 
 /// The profile's fields named as in C++ (NaN and infinity: null).

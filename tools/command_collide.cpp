@@ -51,14 +51,6 @@ struct Collide_options {
     std::string png;
 };
 
-nlohmann::ordered_json object_json(const std::string& file, const Prepared_object& prepared)
-{
-    return {{"file", file},
-            {"points", prepared.object.size()},
-            {"sampling_radius", prepared.object.sampling_radius()},
-            {"preprocess_ms", prepared.preprocess_ms}};
-}
-
 void print_summary(const nlohmann::ordered_json& r)
 {
     const auto object_line = [](const char* name, const nlohmann::ordered_json& o) {

@@ -131,13 +131,6 @@ PCCD::Contact_time_result contact_time(const PCCD::Point_cloud_object<>& a, cons
     return PCCD::time_of_contact(a, *ma.screw, b, *mb.screw, options);
 }
 
-/// A point or vector as [x, y, z], or null when the query did not compute it (NaN).
-nlohmann::ordered_json vector_json(const Eigen::Vector3d& v)
-{
-    if (!v.allFinite()) return nullptr;
-    return {v.x(), v.y(), v.z()};
-}
-
 /// A pose as its 12 numbers, the 3x4 matrix [R | t] row by row.
 nlohmann::ordered_json pose_json(const PCCD::Rigid_transform_3<double>& p)
 {
@@ -147,14 +140,6 @@ nlohmann::ordered_json pose_json(const PCCD::Rigid_transform_3<double>& p)
         out.push_back(p.translation()(i));
     }
     return out;
-}
-
-nlohmann::ordered_json object_json(const std::string& file, const Prepared_object& prepared)
-{
-    return {{"file", file},
-            {"points", prepared.object.size()},
-            {"sampling_radius", prepared.object.sampling_radius()},
-            {"preprocess_ms", prepared.preprocess_ms}};
 }
 
 /// The fields of Contact_time_result under their C++ names (NaN: null).

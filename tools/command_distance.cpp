@@ -113,21 +113,6 @@ nlohmann::ordered_json counters_json(const PCCD::Distance_counters& counters)
     return out;
 }
 
-/// A point or vector as [x, y, z], or null when the query did not compute it (NaN).
-nlohmann::ordered_json vector_json(const Eigen::Vector3d& v)
-{
-    if (!v.allFinite()) return nullptr;
-    return {v.x(), v.y(), v.z()};
-}
-
-nlohmann::ordered_json object_json(const std::string& file, const Prepared_object& prepared)
-{
-    return {{"file", file},
-            {"points", prepared.object.size()},
-            {"sampling_radius", prepared.object.sampling_radius()},
-            {"preprocess_ms", prepared.preprocess_ms}};
-}
-
 nlohmann::ordered_json result_json(const PCCD::Distance_result& r)
 {
     nlohmann::ordered_json j;

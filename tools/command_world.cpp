@@ -130,12 +130,6 @@ std::string pose_text(const std::array<double, 12>& m)
     return text;
 }
 
-nlohmann::ordered_json vector_json(const Eigen::Vector3d& v)
-{
-    if (!v.allFinite()) return nullptr;
-    return {v.x(), v.y(), v.z()};
-}
-
 void run_world(const World_command_options& o)
 {
     if (o.scene.empty() == o.generate.empty())

@@ -108,6 +108,23 @@ struct Prepared_object {
     double preprocess_ms;
 };
 
+/// A prepared object as the JSON outputs report it: file, points, sampling radius, preprocessing time.
+inline nlohmann::ordered_json object_json(const std::string& file, const Prepared_object& prepared)
+{
+    return {{"file", file},
+            {"points", prepared.object.size()},
+            {"sampling_radius", prepared.object.sampling_radius()},
+            {"preprocess_ms", prepared.preprocess_ms}};
+}
+
+/// A vector as a JSON array of three numbers; null when an entry is NaN or infinite (an answer
+/// that has no such point or direction).
+inline nlohmann::ordered_json vector_json(const Eigen::Vector3d& v)
+{
+    if (!v.allFinite()) return nullptr;
+    return {v.x(), v.y(), v.z()};
+}
+
 /// Preprocesses the points with Point_cloud_object's defaults (the hierarchy's bounding volume
 /// named `volume`); normals, when present, are hints that orient the object's normals (as `pccd
 /// eval` does).

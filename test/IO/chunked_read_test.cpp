@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 #include "error_test_helpers.h"
+#include "file_helpers.h"
 
 namespace {
 
@@ -29,24 +30,12 @@ using PCCD::Point_data;
 using PCCD::IO::read_points;
 using pccd_test::require_file_error;
 
-std::string tmp_path(const std::string& name)
-{
-    static const fs::path dir = [] {
-        const fs::path d = fs::path(PCCD_TEST_TMP_DIR) / "io_chunked";
-        fs::create_directories(d);
-        return d;
-    }();
-    return (dir / name).string();
-}
+std::string tmp_path(const std::string& name) { return pccd_test::scratch_path("io_chunked", name); }
 
 std::string make_file(const std::string& name, const std::string& content)
 {
     const std::string path = tmp_path(name);
-    fs::remove(path);
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
-    out.close();
-    REQUIRE(out.good());
+    pccd_test::write_bytes(path, content);
     return path;
 }
 

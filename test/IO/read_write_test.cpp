@@ -30,6 +30,7 @@
 #include <vector>
 #include "data_helpers.h"
 #include "error_test_helpers.h"
+#include "file_helpers.h"
 
 namespace {
 
@@ -56,34 +57,17 @@ std::string str(const Args&... args)
 }
 
 /// A path in this test's own directory under PCCD_TEST_TMP_DIR.
-std::string tmp_path(const std::string& name)
-{
-    static const fs::path dir = [] {
-        const fs::path d = fs::path(PCCD_TEST_TMP_DIR) / "io";
-        fs::create_directories(d);
-        return d;
-    }();
-    return (dir / name).string();
-}
+std::string tmp_path(const std::string& name) { return pccd_test::scratch_path("io", name); }
 
 /// Writes `content` byte for byte to tmp_path(name) and returns that path.
 std::string make_file(const std::string& name, const std::string& content)
 {
     const std::string path = tmp_path(name);
-    // Removed first: on ext4, truncating and rewriting a file forces a flush to the disk on close.
-    fs::remove(path);
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
-    out.close();
-    REQUIRE(out.good());
+    pccd_test::write_bytes(path, content);
     return path;
 }
 
-std::string file_content(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+using pccd_test::read_bytes;
 
 std::string replaced(std::string text, const std::string& from, const std::string& to)
 {
@@ -268,11 +252,11 @@ TEST_CASE("written PLY headers say ascii or binary little endian with double coo
     const std::string ascii = tmp_path("header_ascii.ply"), binary = tmp_path("header_binary.ply");
     write_points(ascii, data);
     write_points(binary, data, {.binary = true});
-    CHECK_THAT(file_content(ascii), Catch::Contains("format ascii 1.0") && Catch::Contains("property double x"));
-    CHECK_THAT(file_content(binary),
+    CHECK_THAT(read_bytes(ascii), Catch::Contains("format ascii 1.0") && Catch::Contains("property double x"));
+    CHECK_THAT(read_bytes(binary),
                Catch::Contains("format binary_little_endian 1.0") && Catch::Contains("property double z"));
     // 4 points of 3 doubles after the header.
-    const std::string content = file_content(binary);
+    const std::string content = read_bytes(binary);
     CHECK(content.size() - (content.find("end_header\n") + 11) == 4 * 3 * sizeof(double));
 }
 
@@ -736,7 +720,7 @@ TEST_CASE("a lower precision writes fewer digits", "[io]")
     data.points = {{1.0 / 3.0, 0.1, 2.0 / 3.0}};
     const std::string path = tmp_path("precision.xyz");
     write_points(path, data, {.precision = 6});
-    CHECK_THAT(file_content(path), Catch::Contains("0.333333 0.1 0.666667"));
+    CHECK_THAT(read_bytes(path), Catch::Contains("0.333333 0.1 0.666667"));
     CHECK(read_points(path).points[0] == Eigen::Vector3d(0.333333, 0.1, 0.666667));
 }
 
@@ -756,7 +740,7 @@ TEST_CASE("no prefix or corruption of a valid file crashes, hangs or escapes Fil
         {"fuzz_cloud.xyz", {}}, {"fuzz_cloud.off", {}}, {"fuzz_cloud_ascii.ply", {}}, {"fuzz_cloud_binary.ply", {.binary = true}}};
     for (const auto& [name, options] : written) {
         write_points(tmp_path(name), cloud, options);
-        samples.emplace_back("src_" + name, file_content(tmp_path(name)));
+        samples.emplace_back("src_" + name, read_bytes(tmp_path(name)));
     }
 
     std::size_t reads = 0, rejected = 0;

@@ -10,15 +10,13 @@
 
 #include <cmath>
 #include <cstddef>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <numbers>
 #include <string>
 #include <typeinfo>
 #include <vector>
 
 #include "error_test_helpers.h"
+#include "file_helpers.h"
 
 namespace pccd_robustness {
 
@@ -51,28 +49,8 @@ inline Points flat_grid(int n, double step, const Eigen::Vector3d& origin = Eige
 using pccd_test::require_file_error;
 using pccd_test::require_invalid_input;
 
-/// A path in this executable's own scratch directory under PCCD_TEST_TMP_DIR.
-inline std::string scratch_path(const std::string& directory, const std::string& name)
-{
-    const std::filesystem::path dir = std::filesystem::path(PCCD_TEST_TMP_DIR) / directory;
-    std::filesystem::create_directories(dir);
-    return (dir / name).string();
-}
-
-inline std::string read_bytes(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-inline void write_bytes(const std::string& path, const std::string& bytes)
-{
-    // Removed first: on ext4, truncating and rewriting a file forces a flush to the disk on close.
-    std::filesystem::remove(path);
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), std::streamsize(bytes.size()));
-    out.close();
-    REQUIRE(out.good());
-}
+using pccd_test::read_bytes;
+using pccd_test::scratch_path;
+using pccd_test::write_bytes;
 
 } // namespace pccd_robustness
