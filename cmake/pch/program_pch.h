@@ -1,6 +1,6 @@
 // The headers most of PCCD's own programs include (the standard library, Eigen, the object, the
 // intersection query and the poses), precompiled once per build directory and reused by the
-// examples and benchmarks that do not link CGAL (pccd_add_program in cmake/PCCDInternalTargets.cmake;
+// benchmarks that do not link CGAL (pccd_add_program in cmake/PCCDInternalTargets.cmake;
 // off with -DPCCD_PROGRAM_PCH=OFF). Only a build-time saving: every program still includes what it
 // uses, and the header check of the test build compiles every public header on its own.
 #pragma once
