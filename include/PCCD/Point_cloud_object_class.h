@@ -252,6 +252,11 @@ public:
     /// @}
 
 private:
+    // The lean object shares the input stages (its preprocessing reads timed_cloud, checked_input
+    // and remove_outliers).
+    template <PointCloudKernel>
+    friend class Euclidean_point_cloud_object;
+
     struct Data {
         Point_cloud<K> cloud;
         std::shared_ptr<const Proximity_graph> graph;

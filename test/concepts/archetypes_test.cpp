@@ -243,29 +243,74 @@ public:
     std::size_t size() const { return m_object->size(); }
     const Cloud& cloud() const { return m_cloud; }
     const Surface& surface() const { return m_surface; }
+    const PCCD::Point_cloud_hierarchy& hierarchy() const { return m_object->hierarchy(); }
+    double sampling_radius() const { return m_object->sampling_radius(); }
+    double noise_estimate() const { return m_object->noise_estimate(); }
+
+protected:
+    const Object* m_object;
+
+private:
+    Cloud m_cloud;
+    Surface m_surface;
+};
+
+/// Exactly the members GeodesicCollisionObject requires: a collision object, its graph and CPSP map.
+class Geodesic_collision_object : public Collision_object {
+public:
+    explicit Geodesic_collision_object(const Object& o) : Collision_object(o) {}
     const PCCD::Proximity_graph& graph() const { return m_object->graph(); }
     const PCCD::Close_pairs_shortest_paths& cpsp() const { return m_object->cpsp(); }
+};
+
+/// The cloud as EuclideanCollisionObject sees it: CollisionObject's members, its types, nearest()
+/// and within_radius().
+class Searchable_cloud : public Cloud {
+public:
+    using FT = double;
+    using Vector_3 = Eigen::Vector3d;
+    using Neighbor = PCCD::Neighbor<double>;
+    explicit Searchable_cloud(const Object& o) : Cloud(o), m_object(&o) {}
+    Neighbor nearest(const Vector_3& v) const { return m_object->cloud().nearest(v); }
+    void within_radius(const Vector_3& v, FT r, std::vector<Neighbor>& out) const
+    {
+        m_object->cloud().within_radius(v, r, out);
+    }
+
+private:
+    const Object* m_object;
+};
+
+/// Exactly the members EuclideanCollisionObject requires: no graph and no CPSP map.
+class Euclidean_collision_object {
+public:
+    explicit Euclidean_collision_object(const Object& o) : m_object(&o), m_cloud(o), m_surface(o) {}
+    std::size_t size() const { return m_object->size(); }
+    const Searchable_cloud& cloud() const { return m_cloud; }
+    const Surface& surface() const { return m_surface; }
     const PCCD::Point_cloud_hierarchy& hierarchy() const { return m_object->hierarchy(); }
     double sampling_radius() const { return m_object->sampling_radius(); }
     double noise_estimate() const { return m_object->noise_estimate(); }
 
 private:
     const Object* m_object;
-    Cloud m_cloud;
+    Searchable_cloud m_cloud;
     Surface m_surface;
 };
 
-/// Exactly the members ProximityObject requires: a collision object and its normals.
-class Proximity_object : public Collision_object {
+/// Exactly the members ProximityObject requires: a collision object and its normals (a geodesic
+/// one, so that the default leaf intersector takes it).
+class Proximity_object : public Geodesic_collision_object {
 public:
-    explicit Proximity_object(const Object& o) : Collision_object(o), m_normals(&o.normals()) {}
+    explicit Proximity_object(const Object& o) : Geodesic_collision_object(o), m_normals(&o.normals()) {}
     const Eigen::Matrix3Xd& normals() const { return *m_normals; }
 
 private:
     const Eigen::Matrix3Xd* m_normals;
 };
 
-// Near-misses: each lacks one requirement of CollisionObject.
+// Near-misses: each lacks one requirement of CollisionObject (Without_graph and With_foreign_paths
+// one of GeodesicCollisionObject).
 struct Without_noise_estimate {
     std::size_t size() const;
     const Cloud& cloud() const;
@@ -537,17 +582,26 @@ static_assert(!PCCD::ReadablePointMap<archetype::Intensity_map, archetype::Scan_
 static_assert(!PCCD::ReadablePointMap<archetype::Map_without_get, archetype::Scan_record>);
 
 static_assert(PCCD::CollisionObject<archetype::Collision_object>);
+static_assert(!PCCD::GeodesicCollisionObject<archetype::Collision_object>);
+static_assert(!PCCD::EuclideanCollisionObject<archetype::Collision_object>); // a cloud without searches
+static_assert(PCCD::GeodesicCollisionObject<archetype::Geodesic_collision_object>);
+static_assert(PCCD::EuclideanCollisionObject<archetype::Euclidean_collision_object>);
+static_assert(!PCCD::GeodesicCollisionObject<archetype::Euclidean_collision_object>);
 static_assert(!PCCD::CollisionObject<archetype::Without_noise_estimate>);
-static_assert(!PCCD::CollisionObject<archetype::Without_graph>);
-static_assert(!PCCD::CollisionObject<archetype::With_foreign_paths>);
+static_assert(PCCD::CollisionObject<archetype::Without_graph>);
+static_assert(!PCCD::GeodesicCollisionObject<archetype::Without_graph>);
+static_assert(!PCCD::GeodesicCollisionObject<archetype::With_foreign_paths>);
 static_assert(!PCCD::CollisionObject<archetype::With_value_surface>);
 static_assert(!PCCD::CollisionObject<archetype::With_temporary_coordinates>);
 static_assert(!PCCD::CollisionObject<archetype::Without_hierarchy>);
 static_assert(PCCD::ProximityObject<archetype::Proximity_object>);
 static_assert(!PCCD::ProximityObject<archetype::Collision_object>); // no normals
 
-using Arch = archetype::Collision_object;
+using Arch = archetype::Geodesic_collision_object;
+using Euclidean_arch = archetype::Euclidean_collision_object;
 static_assert(PCCD::LeafIntersector<archetype::Leaf_intersector, Arch, Arch>);
+static_assert(PCCD::LeafIntersector<PCCD::Interpolation_search, Euclidean_arch, Arch>);
+static_assert(PCCD::LeafIntersector<PCCD::Randomized_sampling, archetype::Collision_object, archetype::Collision_object>);
 static_assert(PCCD::LeafIntersector<PCCD::Interpolation_search, Arch, Arch>);
 static_assert(PCCD::LeafIntersector<PCCD::Randomized_sampling, Arch, Arch>);
 static_assert(!PCCD::LeafIntersector<archetype::Without_run, Arch, Arch>);
@@ -564,6 +618,7 @@ static_assert(!PCCD::PathSource<archetype::Path_length_source>);
 static_assert(!PCCD::PathSource<archetype::Caching_path_source>);
 // The interpolation search's role reads its paths through the PathSource archetype.
 template struct PCCD::internal::Isearch_role<PCCD::Interpolation_search, Arch, Arch, archetype::Path_source>;
+template struct PCCD::internal::Isearch_role<PCCD::Interpolation_search, Euclidean_arch, Arch, archetype::Path_source>;
 
 static_assert(PCCD::SurfaceDistance<archetype::Distance>);
 static_assert(!PCCD::SurfaceDistance<archetype::Distance_without_point_queries>);
@@ -590,6 +645,12 @@ TEST_CASE("the intersection queries run on collision-object archetypes as on the
         CHECK(PCCD::do_intersect(arch, identity, object, pose, {}, PCCD::Randomized_sampling{}).intersects == expected);
         CHECK(PCCD::do_intersect(arch, identity, arch, pose, {}, on_the_fly).intersects == expected);
         CHECK(PCCD::do_intersect(arch, identity, arch, pose, {}, archetype::Leaf_intersector{}).intersects == expected);
+        // Without a CPSP map: the Euclidean partners and chord paths, with both policies (the
+        // certification of "separate" runs the interpolation search whatever the policy).
+        const Euclidean_arch euclidean(object);
+        CHECK(PCCD::do_intersect(euclidean, identity, euclidean, pose).intersects == expected);
+        CHECK(PCCD::do_intersect(euclidean, identity, arch, pose).intersects == expected);
+        CHECK(PCCD::do_intersect(euclidean, identity, euclidean, pose, {}, PCCD::Randomized_sampling{}).intersects == expected);
         const auto curve = PCCD::intersection_points(arch, identity, arch, pose);
         CHECK(curve.points.size() == PCCD::intersection_points(object, identity, object, pose).points.size());
     }

@@ -9,6 +9,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
+#include <utility>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -31,9 +33,6 @@ struct Surface_evaluation;        // PCCD/Surface/WLS_surface.h
 ///   Path_choice::on_the_fly, walk over it);
 /// - `o.surface().evaluate(x)`: the PCCD::Surface_evaluation of the implicit surface at x, and
 ///   `o.surface().support_radius()`: the distance beyond which the surface is undefined;
-/// - `o.graph()`: its PCCD::Proximity_graph (read by Path_choice::on_the_fly);
-/// - `o.cpsp()`: the PCCD::Close_pairs_shortest_paths map of that graph (annulus, targets,
-///   distances, bound and, through Stored_paths, the stored paths);
 /// - `o.hierarchy()`: a PCCD::Point_cloud_hierarchy over its points; when it has reaches
 ///   (Point_cloud_hierarchy::has_reach), the reach of each point must be its domain radius: f must
 ///   be undefined (or outside_domain) at every x farther than reach_i from its nearest point p_i.
@@ -46,8 +45,17 @@ struct Surface_evaluation;        // PCCD/Surface/WLS_surface.h
 /// All of these must be const and safe to call concurrently; the references must stay valid while
 /// the object lives.
 ///
+/// The interpolation search (the default leaf intersector) also needs the partners of a sample and
+/// the paths between them: a GeodesicCollisionObject gives them from its CPSP map, a
+/// EuclideanCollisionObject from its kd-tree. Randomized_sampling needs neither, but do_intersect()
+/// and the queries built on it certify a "separate" with the interpolation search whatever the
+/// policy (Intersection_options::certify_separation), so their objects must model one of the two
+/// (a static assertion says so otherwise).
+///
 /// Models: PCCD::Point_cloud_object<K> and PCCD::Deforming_point_cloud_object<K> (its current
-/// frame) for every kernel K. Archetype and near-misses: test/concepts/archetypes_test.cpp.
+/// frame), both GeodesicCollisionObject, and PCCD::Euclidean_point_cloud_object<K>, a
+/// EuclideanCollisionObject, for every kernel K. Archetype and near-misses:
+/// test/concepts/archetypes_test.cpp.
 namespace internal {
 
 /// A 3 x N Eigen matrix of float or double held by the object (an lvalue, not a temporary).
@@ -65,11 +73,50 @@ concept CollisionObject = requires(const O& o, std::uint32_t i, const Eigen::Vec
     { o.cloud().coordinates() } -> internal::Point_matrix_reference;
     { o.surface().evaluate(x) } -> std::same_as<Surface_evaluation>;
     { o.surface().support_radius() } -> std::convertible_to<double>;
-    { o.graph() } -> std::convertible_to<const Proximity_graph&>;
-    { o.cpsp() } -> std::convertible_to<const Close_pairs_shortest_paths&>;
     { o.hierarchy() } -> std::convertible_to<const Point_cloud_hierarchy&>;
     { o.sampling_radius() } -> std::convertible_to<double>;
     { o.noise_estimate() } -> std::convertible_to<double>;
 };
+
+/// \concept GeodesicCollisionObject
+/// A CollisionObject that keeps its geodesic map: for `const O& o`,
+/// - `o.graph()`: its PCCD::Proximity_graph (read by Path_choice::on_the_fly);
+/// - `o.cpsp()`: the PCCD::Close_pairs_shortest_paths map of that graph (annulus, targets,
+///   distances, bound and, through Stored_paths, the stored paths), which the interpolation search
+///   takes its partners and paths from.
+/// Models: PCCD::Point_cloud_object<K>, PCCD::Deforming_point_cloud_object<K>.
+template <class O>
+concept GeodesicCollisionObject = CollisionObject<O> && requires(const O& o) {
+    { o.graph() } -> std::convertible_to<const Proximity_graph&>;
+    { o.cpsp() } -> std::convertible_to<const Close_pairs_shortest_paths&>;
+};
+
+/// \concept EuclideanCollisionObject
+/// A CollisionObject whose cloud answers nearest-point and radius queries, from which the
+/// interpolation search takes the partners of a sample (the points of its Euclidean annulus) and
+/// the paths of a bracket (the points nearest to the chord). With `C` the type of `o.cloud()` (for
+/// `const O& o`): the types `C::FT` (float or double), `C::Vector_3` (an Eigen 3-vector of FT) and
+/// `C::Neighbor` (with `index`, a point index, and `squared_distance`), and for a `C::Vector_3 v`, an
+/// `FT r` and a `std::vector<C::Neighbor>& out`: `o.cloud().position(i)` convertible to
+/// `C::Vector_3`, `o.cloud().nearest(v).index` (the nearest point) and
+/// `o.cloud().within_radius(v, r, out)` (every point within r, nearest first).
+/// Models: PCCD::Euclidean_point_cloud_object<K>, and every PCCD::Point_cloud_object<K> too (the
+/// interpolation search prefers the CPSP map where there is one).
+namespace internal {
+/// The type of `o.cloud()` for a `const O& o`.
+template <class O>
+using cloud_type = std::remove_cvref_t<decltype(std::declval<const O&>().cloud())>;
+} // namespace internal
+
+template <class O>
+concept EuclideanCollisionObject =
+    CollisionObject<O> &&
+    requires(const O& o, std::uint32_t i, const typename internal::cloud_type<O>::Vector_3& v,
+             typename internal::cloud_type<O>::FT r, std::vector<typename internal::cloud_type<O>::Neighbor>& out) {
+        { o.cloud().position(i) } -> std::convertible_to<typename internal::cloud_type<O>::Vector_3>;
+        { o.cloud().nearest(v).index } -> std::convertible_to<std::uint32_t>;
+        { o.cloud().nearest(v).squared_distance } -> std::convertible_to<double>;
+        o.cloud().within_radius(v, r, out);
+    };
 
 } // namespace PCCD

@@ -1,7 +1,8 @@
 // PCCD/Intersection/internal/isearch_role.h -- one role of the interpolation search
 // (doc/manual/intersection.md, "The leaf intersector policies"; WSCG05 section 4): for a sample p_i of
-// the sampled cloud S, the candidate test on f_T, the partners from p_i's CPSP annulus, the bracket
-// and the interpolation search along its path, giving an approximate intersection point (AIP).
+// the sampled cloud S, the candidate test on f_T, the partners from p_i's annulus (its CPSP list, or a
+// radius query for objects without one: isearch_partners.h), the bracket and the interpolation
+// search along its path, giving an approximate intersection point (AIP).
 // Shared by the flat traversal's random draws and the hierarchy walk (isearch_walk.h); internal to
 // Interpolation_search.h, whose public fields (`Policy`) parameterize it.
 #pragma once
@@ -18,11 +19,9 @@
 
 #include <Eigen/Core>
 
-#include <PCCD/Geodesic/Close_pairs_shortest_paths.h>
-#include <PCCD/Geodesic/Paths_on_the_fly.h>
-#include <PCCD/Geodesic/Stored_paths.h>
 #include <PCCD/Intersection/Intersection_result.h>
 #include <PCCD/Intersection/internal/Covering_grid.h>
+#include <PCCD/Intersection/internal/isearch_partners.h>
 #include <PCCD/Intersection/Query_state.h>
 #include <PCCD/Random.h>
 
@@ -37,11 +36,11 @@ inline Intersection_point isearch_aip(const Eigen::Vector3d& world)
 /// The annulus of p's list; when the list ends before the inner radius (sparse or boundary
 /// points), its outer half.
 template <class Map>
-std::pair<std::size_t, std::size_t> annulus_range(const Map& cpsp, std::uint32_t p, double inner, double outer)
+std::pair<std::size_t, std::size_t> annulus_range(const Map& lists, std::uint32_t p, double inner, double outer)
 {
-    auto [first, last] = cpsp.annulus(p, inner, outer);
+    auto [first, last] = lists.annulus(p, inner, outer);
     if (first >= last) {
-        const std::size_t size = cpsp.targets(p).size();
+        const std::size_t size = lists.targets(p).size();
         last = size;
         first = std::max<std::size_t>(1, size / 2);
     }
@@ -58,12 +57,12 @@ inline double predicted_same_side(const Surface_evaluation& ei, const Eigen::Vec
 
 template <class Policy, class S, class Map>
 void choose_partners(const Policy& policy, const Posed_object<S>& sampled, const Rigid_transform_3<double>& s_to_t,
-                     const Map& cpsp, std::uint32_t i, std::size_t first, std::size_t last,
+                     const Map& lists, std::uint32_t i, std::size_t first, std::size_t last,
                      const Surface_evaluation& ei, double depth,
                      std::vector<std::pair<double, std::uint32_t>>& ranked, Query_state& state)
 {
     ranked.clear();
-    const auto targets = cpsp.targets(i);
+    const auto targets = lists.targets(i);
     if (policy.partner_choice == std::remove_cvref_t<decltype(policy.partner_choice)>::random) {
         const std::size_t count = std::min(policy.partner_candidates, last - first);
         std::vector<std::uint32_t> entries(last - first);
@@ -164,8 +163,9 @@ struct Isearch_role {
     Query_state& state;
     double epsilon;
     Rigid_transform_3<double> s_to_t = tested.from_world * sampled.to_world;
-    const Close_pairs_shortest_paths& cpsp = sampled.object->cpsp();
-    double rho = policy.annulus_outer * cpsp.bound();
+    using Partners = decltype(partner_lists(std::declval<const Posed_object<S>&>()));
+    Partners partners = partner_lists(sampled);
+    double rho = policy.annulus_outer * partners.bound();
     double inner = rho * (1.0 - policy.annulus_width);
     double noise_band = sampled.noise_estimate();
     double partner_depth = 0.5 * tested.sampling_radius();
@@ -204,13 +204,13 @@ struct Isearch_role {
         }
         if (std::abs(di) > policy.lipschitz_slack * rho) return true;
         ++state.counters.brackets_tried;
-        const auto [first, last] = annulus_range(cpsp, i, inner, rho);
+        const auto [first, last] = annulus_range(partners, i, inner, rho);
         if (first >= last) return true;
-        choose_partners(policy, sampled, s_to_t, cpsp, i, first, last, ei, partner_depth, ranked, state);
+        choose_partners(policy, sampled, s_to_t, partners, i, first, last, ei, partner_depth, ranked, state);
         if (ranked.empty() && cover) cover_predicted(i, first, last, ei);
         for (const auto& [score, entry] : ranked) {
             if (state.out_of_budget()) return false;
-            const std::uint32_t j = cpsp.targets(i)[entry];
+            const std::uint32_t j = partners.targets(i)[entry];
             ++state.counters.partner_candidates;
             const Surface_evaluation ej = evaluate_point(j);
             if (!ej.defined()) continue;
@@ -237,31 +237,12 @@ struct Isearch_role {
         const double least = policy.walk_predicted_cover * std::abs(ei.value);
         if (!std::isfinite(least)) return;
         const Eigen::Vector3d pi = s_to_t.transform_point(sampled.position(i));
-        const auto targets = cpsp.targets(i);
+        const auto targets = partners.targets(i);
         for (std::size_t e = first; e < last; ++e) {
             const Eigen::Vector3d local = sampled.position(targets[e]);
             if (predicted_same_side(ei, pi, s_to_t.transform_point(local)) >= least) cover->add(local);
         }
     }
 };
-
-/// Calls `body(path_source)` with the path source of `sampled` that `policy.paths` selects: the
-/// stored CPSP paths, or paths computed on the fly over the proximity graph (PathSource models).
-template <class Policy, class S, class Body>
-void with_path_source(const Policy& policy, const Posed_object<S>& sampled, const Body& body)
-{
-    const Close_pairs_shortest_paths& cpsp = sampled.object->cpsp();
-    if (policy.paths == std::remove_cvref_t<decltype(policy.paths)>::stored) {
-        body(Stored_paths(cpsp));
-    } else {
-        // The map's distances are floats: a bound a little above it keeps its farthest targets.
-        const Proximity_graph& graph = sampled.object->graph();
-        const auto& coordinates = sampled.object->cloud().coordinates();
-        using FT = typename std::remove_cvref_t<decltype(coordinates)>::Scalar;
-        body(Paths_on_the_fly<Proximity_graph::Graph, Proximity_graph::Length_map, Proximity_graph::Virtual_map, FT>(
-            graph.graph(), graph.length_map(), coordinates, {.bound = double(cpsp.bound()) * (1.0 + 1e-6)},
-            graph.virtual_map()));
-    }
-}
 
 } // namespace PCCD::internal

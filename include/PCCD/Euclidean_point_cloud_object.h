@@ -1,0 +1,225 @@
+// PCCD/Euclidean_point_cloud_object.h -- the lean preprocessed object for scene-scale scans: the
+// implicit surface with the Euclidean kernel over the points, their kd-tree, oriented normals,
+// domain radii and hierarchy, and nothing else (no proximity graph, no CPSP map), so that it holds
+// about a fifth of a Point_cloud_object per point. Every query takes it (a
+// EuclideanCollisionObject); the interpolation search takes the partners of its samples from
+// kd-tree radius queries. Implements doc/manual/surface.md, "The lean object: the Euclidean kernel
+// for large scans".
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <ranges>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include <PCCD/Point_cloud_object.h>
+
+namespace PCCD {
+
+/// A preprocessed point cloud whose implicit surface uses the Euclidean kernel: f(x) is the WLS fit
+/// over the points within the support radius of x in space (Euclidean_distance), not along the
+/// surface. It keeps the points (in spatial order) with their kd-tree, the input index of each
+/// point, the oriented normals, the domain radii and the hierarchy; the proximity graph is built
+/// only to orient the normals and freed, and no CPSP map is built.
+///
+/// Preprocessing, in order: the kd-tree, the outliers (Outlier_options), the sampling radius r(P),
+/// the kernel (Bandwidth_options, with the noise-aware widening of Point_cloud_object), the
+/// unoriented normals and the noise estimate with the Euclidean kernel, the proximity graph
+/// (`options.graph`) and the orientation over it (with the given normals as hints, as in
+/// Point_cloud_object), the domain radii and the hierarchy. The options are
+/// Point_cloud_object_options; `cpsp`-only settings do not apply.
+///
+/// What it gives up against Point_cloud_object: the Euclidean kernel bleeds across gaps thinner than
+/// twice the support radius (two faces of a thin wall, fingers that nearly touch), where the
+/// geodesic kernel keeps them apart; Path_choice does not apply (the paths of brackets are the
+/// samples nearest to the chord); it has no save() and no Deforming_point_cloud_object.
+///
+/// \tparam K a model of PointCloudKernel.
+///
+/// Immutable after construction; copies share the data. Every member function is const and safe
+/// to call concurrently.
+template <PointCloudKernel K = Eigen_kernel<double>>
+class Euclidean_point_cloud_object {
+    using Base = Point_cloud_object<K>;
+
+public:
+    using Kernel = K;
+    using FT = typename K::FT;
+    using Surface = WLS_surface<Euclidean_distance<K>, Gaussian_weight>;
+
+    /// \name Construction
+    /// @{
+    /// From the points in the columns of a 3 x N matrix.
+    /// \throws Invalid_input for fewer than two points, a non-finite point or invalid options.
+    explicit Euclidean_point_cloud_object(const Eigen::Matrix3Xd& points, const Point_cloud_object_options& options = {})
+        : m_data(preprocess(Base::timed_cloud(points, options), std::nullopt, options))
+    {
+    }
+
+    /// From a range of points (any Point3 type).
+    template <std::ranges::input_range Range>
+        requires Point3<std::ranges::range_value_t<Range>>
+    explicit Euclidean_point_cloud_object(const Range& points, const Point_cloud_object_options& options = {})
+        : m_data(preprocess(Base::timed_cloud(points, Identity_point_map<std::ranges::range_value_t<Range>>(), options),
+                            std::nullopt, options))
+    {
+    }
+
+    /// From what a point file holds (PCCD::IO::read_points): its points, and its normals, when it
+    /// has them, as hints of the orientation (as Point_cloud_object does).
+    /// \throws Invalid_input as above, and if there are normals but not exactly one per point.
+    explicit Euclidean_point_cloud_object(const Point_data& data, const Point_cloud_object_options& options = {})
+        : m_data(from_point_data(data, options))
+    {
+    }
+    /// @}
+
+    /// \name The implicit surface
+    /// @{
+    const Surface& surface() const { return m_data->surface; }
+    /// @}
+
+    /// \name Preprocessed state (as in Point_cloud_object)
+    /// @{
+    const Point_cloud<K>& cloud() const { return m_data->cloud; }
+    std::size_t size() const { return m_data->cloud.size(); }
+    /// The index, among the points given, of point `i` of cloud(). \pre i < size()
+    std::uint32_t input_index(std::size_t i) const
+    {
+        PCCD_precondition(i < size());
+        return m_data->input_index[i];
+    }
+    const std::vector<std::uint32_t>& input_indices() const { return m_data->input_index; }
+    const Point_cloud_hierarchy& hierarchy() const { return m_data->hierarchy; }
+    double sampling_radius() const { return m_data->sampling_radius; }
+    const Gaussian_weight& weight() const { return m_data->surface.weight(); }
+    double bandwidth() const { return weight().bandwidth(); }
+    double eta() const { return weight().support_radius() / m_data->sampling_radius; }
+    const Eigen::Matrix3Xd& normals() const { return m_data->surface.normals(); }
+    const Orientation_report& orientation() const { return m_data->orientation; }
+    bool normals_given() const { return m_data->normals_given; }
+    const Scan_estimate& scan() const { return m_data->scan; }
+    double noise_estimate() const { return m_data->scan.noise; }
+    const Eigen::VectorXd& domain_radii() const { return m_data->surface.domain_radii(); }
+    const Preprocessing_times& timings() const { return m_data->timings; }
+    /// Bytes the object holds: points and kd-tree, input indices, normals, domain radii, hierarchy.
+    std::size_t memory_bytes() const
+    {
+        const std::size_t n = size();
+        return m_data->cloud.kd_tree().memory_bytes() + n * sizeof(std::uint32_t) +
+               std::size_t(normals().size()) * sizeof(double) + std::size_t(domain_radii().size()) * sizeof(double) +
+               m_data->hierarchy.memory_bytes();
+    }
+    /// @}
+
+private:
+    struct Data {
+        Point_cloud<K> cloud;
+        double sampling_radius;
+        Orientation_report orientation;
+        bool normals_given;
+        Scan_estimate scan;
+        Preprocessing_times timings;
+        Surface surface;
+        Point_cloud_hierarchy hierarchy;
+        std::vector<std::uint32_t> input_index;
+    };
+
+    static std::shared_ptr<const Data> from_point_data(const Point_data& data, const Point_cloud_object_options& options)
+    {
+        Eigen::Matrix3Xd points(3, Eigen::Index(data.points.size()));
+        for (std::size_t i = 0; i < data.points.size(); ++i) points.col(Eigen::Index(i)) = data.points[i];
+        std::optional<Eigen::Matrix3Xd> normals;
+        if (data.has_normals()) {
+            if (data.normals.size() != data.points.size())
+                throw Invalid_input(internal::concat("point data: ", data.normals.size(), " normals for ",
+                                                     data.points.size(), " points (need one per point, or none)"));
+            normals.emplace(3, Eigen::Index(data.normals.size()));
+            for (std::size_t i = 0; i < data.normals.size(); ++i) normals->col(Eigen::Index(i)) = data.normals[i];
+        }
+        auto built = Base::timed_cloud(points, options);
+        points.resize(3, 0); // the cloud holds its own copy
+        return preprocess(std::move(built), std::move(normals), options);
+    }
+
+    static std::shared_ptr<const Data> preprocess(typename Base::Timed_cloud built,
+                                                  std::optional<Eigen::Matrix3Xd> given_normals,
+                                                  Point_cloud_object_options options)
+    {
+        Point_cloud<K>& cloud = built.cloud;
+        Preprocessing_times timings;
+        timings.kd_tree = built.milliseconds;
+        std::vector<std::uint32_t> input_index = Base::checked_input(built, given_normals, options);
+        options = resolve_threads(std::move(options));
+        Scan_estimate scan;
+        scan.input_points = cloud.size();
+        std::optional<Local_spacing> spacing;
+        {
+            internal::Stage_timer stage(options, Preprocessing_stage::outliers, cloud.size());
+            if (options.outliers.remove) {
+                spacing = local_spacing(cloud, options.outliers.neighbors, true, options.outliers.threads);
+                scan.outliers = find_outliers(*spacing, options.outliers);
+                Base::remove_outliers(cloud, given_normals, input_index, scan.outliers);
+                if (!scan.outliers.empty()) spacing.reset();
+            }
+            timings.outliers = stage.finish();
+        }
+        internal::Stage_timer radius_stage(options, Preprocessing_stage::sampling_radius, cloud.size());
+        const double r = PCCD::sampling_radius(cloud, options.sampling_radius);
+        timings.sampling_radius = radius_stage.finish();
+
+        // The kernel and the normals, with the Euclidean kernel (a second time when the noise asks
+        // for a wider automatic kernel, as Point_cloud_object does with the geodesic one).
+        Gaussian_weight weight = gaussian_weight(r, options.bandwidth);
+        Normal_estimate estimate;
+        for (int pass = 0; pass < 2; ++pass) {
+            internal::Stage_timer normals_stage(options, Preprocessing_stage::normals, cloud.size());
+            estimate = estimate_normals(Euclidean_distance<K>(cloud), weight, options.threads);
+            scan.noise = PCCD::noise_estimate(estimate);
+            timings.normals += normals_stage.finish();
+            const std::optional<Gaussian_weight> wider = noise_aware_weight(weight, scan.noise, options.bandwidth);
+            if (!wider || pass == 1) break;
+            weight = *wider;
+        }
+        Orientation_report orientation;
+        {
+            // The graph orients the normals and goes.
+            internal::Stage_timer stage(options, Preprocessing_stage::graph, cloud.size());
+            const Proximity_graph graph = options.graph == Graph_kind::knn
+                                              ? knn_graph(cloud, options.knn)
+                                              : sphere_of_influence_graph(cloud, options.sphere_of_influence);
+            timings.graph = stage.finish();
+            internal::Stage_timer orientation_stage(options, Preprocessing_stage::orientation, cloud.size());
+            orientation = given_normals
+                              ? orient_normals_with_hints(graph, cloud.coordinates(), estimate.normals, *given_normals)
+                              : orient_normals(graph, cloud.coordinates(), estimate.normals);
+            timings.normals += orientation_stage.finish();
+        }
+        const bool normals_given = given_normals.has_value();
+        given_normals.reset();
+        internal::Stage_timer domain_stage(options, Preprocessing_stage::domain, cloud.size());
+        const bool reuse = spacing && spacing->k == std::min<std::size_t>(options.domain.neighbors, cloud.size() - 1);
+        Eigen::VectorXd domain = reuse ? surface_domain_radii(*spacing, options.domain)
+                                       : surface_domain_radii(cloud, options.domain);
+        spacing.reset();
+        timings.outliers += domain_stage.finish();
+
+        const Eigen::VectorXd reach = domain;
+        Surface surface(Euclidean_distance<K>(cloud), weight, std::move(estimate.normals), std::move(domain),
+                        options.surface_fit);
+        internal::Stage_timer stage(options, Preprocessing_stage::hierarchy, cloud.size());
+        Point_cloud_hierarchy hierarchy(cloud.coordinates(), reach, options.hierarchy);
+        timings.hierarchy = stage.finish();
+        return std::make_shared<const Data>(Data{std::move(cloud), r, orientation, normals_given, std::move(scan), timings,
+                                                 std::move(surface), std::move(hierarchy), std::move(input_index)});
+    }
+
+    std::shared_ptr<const Data> m_data;
+};
+
+} // namespace PCCD
