@@ -6,7 +6,7 @@
 //   hierarchy_benchmark [--models bunny00.off,elephant.off,eight.off] [--points 30000]
 //                       [--rotations 50] [--repetitions 3] [--seed 1]
 //                       [--traversals flat,depth_first,likelihood] [--volumes box_and_slab,box,sphere]
-//                       [--csv OUT]
+//                       [--kernels geodesic,euclidean] [--csv OUT]
 //                       [--budgets 5,10,20,50,100 --budget-csv OUT]
 //
 // Peak memory (getrusage) is printed after each model's preprocessing. Per model: the mesh is normalized into [-1, 1]^3, FCL's OBBRSS hierarchy is built on it, and a
@@ -16,6 +16,8 @@
 // thread's CPU clock (the machine is shared; wall time is noisier). Printed per model: mean and
 // median per distance, mean over d in [0, 3] and over the near misses d in [1, 2.25], their ratio to
 // FCL's, p99, and how often each traversal's verdict differs from the flat traversal's and from FCL's.
+// --kernels euclidean adds (or, alone, runs only) the lean object's likelihood walk ("euclidean"),
+// with its own preprocessing time and peak.
 #include "collision_baselines.h"
 
 #include <PCCD/testing/csv.h>
@@ -24,6 +26,7 @@
 
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Intersection/do_intersect.h>
+#include <PCCD/Euclidean_point_cloud_object.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
 #include <PCCD/Similarity_3.h>
@@ -37,6 +40,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -52,6 +56,9 @@ struct Arguments {
     std::uint64_t seed = 1;
     std::vector<std::string> traversals{"flat", "depth_first", "likelihood"};
     std::vector<std::string> volumes{"box_and_slab"};
+    /// geodesic: Point_cloud_object (the traversals above); euclidean: Euclidean_point_cloud_object
+    /// (the likelihood walk, method "euclidean").
+    std::vector<std::string> kernels{"geodesic"};
     std::string csv;
     std::vector<double> budgets; // time budgets in us for the budget sweep (empty: none)
     std::string budget_csv;
@@ -80,6 +87,7 @@ Arguments parse(int argc, char** argv)
         else if (key == "--seed") a.seed = std::stoull(value);
         else if (key == "--traversals") a.traversals = value == "none" ? std::vector<std::string>{} : split(value);
         else if (key == "--volumes") a.volumes = split(value);
+        else if (key == "--kernels") a.kernels = split(value);
         else if (key == "--csv") a.csv = value;
         else if (key == "--budgets") {
             for (const auto& item : split(value)) a.budgets.push_back(std::stod(item));
@@ -200,36 +208,52 @@ void run_model(const std::string& name, const Arguments& args, std::ofstream* cs
         PCCD::sample_triangle_mesh(mesh.vertices, mesh.triangles, args.points, engine);
     std::vector<Eigen::Vector3d> points(std::size_t(sample.points.cols()));
     for (Eigen::Index i = 0; i < sample.points.cols(); ++i) points[std::size_t(i)] = sample.points.col(i);
-    const auto start = PCCD::testing::Clock::now();
-    const PCCD::Point_cloud_object<> object(points, {.hierarchy = {.volume = volume_of(args.volumes.front())}});
-    const double preprocess_ms = PCCD::testing::ms_since(start);
-    // The same cloud with each further bounding volume (the first is `object`).
+    const auto has_kernel = [&](const char* k) { return std::find(args.kernels.begin(), args.kernels.end(), k) != args.kernels.end(); };
+    const auto report = [&](const char* kind, const auto& object, double preprocess_ms) {
+        rusage usage{};
+        getrusage(RUSAGE_SELF, &usage);
+        std::printf("\n%s (%s object): %zu triangles, %zu points sampled by area, r(P) %.5f, preprocessing %.0f ms, peak "
+                    "memory so far %.0f MiB (%.0f bytes per point), hierarchy %zu nodes, depth %zu\n",
+                    name.c_str(), kind, mesh.triangles.size(), object.size(), object.sampling_radius(), preprocess_ms,
+                    double(usage.ru_maxrss) / 1024.0, double(usage.ru_maxrss) * 1024.0 / double(object.size()),
+                    object.hierarchy().nodes().size(), object.hierarchy().height());
+    };
+    // The lean object first, so that the peak it reports is its own.
+    std::optional<PCCD::Euclidean_point_cloud_object<>> lean;
+    if (has_kernel("euclidean")) {
+        const auto start = PCCD::testing::Clock::now();
+        lean.emplace(points, PCCD::Point_cloud_object_options{.hierarchy = {.volume = volume_of(args.volumes.front())}});
+        report("lean, Euclidean", *lean, PCCD::testing::ms_since(start));
+    }
+    std::optional<PCCD::Point_cloud_object<>> geodesic;
     std::map<std::string, PCCD::Point_cloud_object<>> with_volume;
-    for (std::size_t k = 1; k < args.volumes.size(); ++k)
-        with_volume.emplace(args.volumes[k], PCCD::Point_cloud_object<>(points, {.hierarchy = {.volume = volume_of(args.volumes[k])}}));
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    std::printf("\n%s: %zu triangles, %zu points sampled by area, r(P) %.5f, preprocessing %.0f ms, peak memory so "
-                "far %.0f MiB (%.0f bytes per point), hierarchy %zu nodes, depth %zu\n",
-                name.c_str(), mesh.triangles.size(), object.size(), object.sampling_radius(), preprocess_ms,
-                double(usage.ru_maxrss) / 1024.0, double(usage.ru_maxrss) * 1024.0 / double(object.size()),
-                object.hierarchy().nodes().size(), object.hierarchy().height());
+    if (has_kernel("geodesic")) {
+        const auto start = PCCD::testing::Clock::now();
+        geodesic.emplace(points, PCCD::Point_cloud_object_options{.hierarchy = {.volume = volume_of(args.volumes.front())}});
+        report("geodesic", *geodesic, PCCD::testing::ms_since(start));
+        // The same cloud with each further bounding volume (the first is `geodesic`).
+        for (std::size_t k = 1; k < args.volumes.size(); ++k)
+            with_volume.emplace(args.volumes[k], PCCD::Point_cloud_object<>(points, {.hierarchy = {.volume = volume_of(args.volumes[k])}}));
+    }
 
     std::vector<double> distances;
     for (int k = 0; k <= 12; ++k) distances.push_back(0.25 * k);
     const auto poses = PCCD::testing::generate_benchmark_poses(
         {.distances = distances, .rotations_per_distance = args.rotations, .seed = args.seed});
-    if (!args.budgets.empty()) {
-        run_budgets(name, object, fcl, poses, args, budget_csv);
+    if (!args.budgets.empty() && geodesic) {
+        run_budgets(name, *geodesic, fcl, poses, args, budget_csv);
         if (args.traversals.empty()) return;
     }
-    // A method is a traversal, with "/volume" for the volumes after the first (flat walks no volume).
+    // A method is a traversal, with "/volume" for the volumes after the first (flat walks no volume),
+    // on the geodesic object; "euclidean" is the likelihood walk on the lean object.
     std::vector<std::string> methods{"fcl"};
-    for (const auto& t : args.traversals) {
-        methods.push_back(t);
-        if (t != "flat")
-            for (std::size_t k = 1; k < args.volumes.size(); ++k) methods.push_back(t + "/" + args.volumes[k]);
-    }
+    if (geodesic)
+        for (const auto& t : args.traversals) {
+            methods.push_back(t);
+            if (t != "flat")
+                for (std::size_t k = 1; k < args.volumes.size(); ++k) methods.push_back(t + "/" + args.volumes[k]);
+        }
+    if (lean) methods.push_back("euclidean");
     std::map<std::string, Series> series;
     for (const auto& pose : poses) {
         const auto [fcl_hit, fcl_us] = timed(args.repetitions, [&] { return fcl.collide(pose.pose_a, pose.pose_b); });
@@ -251,8 +275,17 @@ void run_model(const std::string& name, const Arguments& args, std::ofstream* cs
         record("fcl", fcl_hit, fcl_us, 0.0, 0, 0);
         for (const auto& m : methods) {
             if (m == "fcl") continue;
+            if (m == "euclidean") {
+                const PCCD::Intersection_options options{.seed = args.seed, .traversal = PCCD::Traversal::likelihood};
+                const auto [result, us] = timed(args.repetitions, [&] {
+                    return PCCD::do_intersect(*lean, pose.pose_a, *lean, pose.pose_b, options);
+                });
+                record(m, result.intersects, us, double(result.counters.f_evaluations), result.counters.node_pairs,
+                       result.counters.leaf_pairs);
+                continue;
+            }
             const std::size_t slash = m.find('/');
-            const PCCD::Point_cloud_object<>& o = slash == std::string::npos ? object : with_volume.at(m.substr(slash + 1));
+            const PCCD::Point_cloud_object<>& o = slash == std::string::npos ? *geodesic : with_volume.at(m.substr(slash + 1));
             const PCCD::Intersection_options options{.seed = args.seed, .traversal = traversal_of(m.substr(0, slash))};
             const auto [result, us] = timed(args.repetitions, [&] {
                 return PCCD::do_intersect(o, pose.pose_a, o, pose.pose_b, options);

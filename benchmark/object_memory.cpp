@@ -10,7 +10,11 @@
 // holds once built (the resident set after the mesh and the sample are freed, minus the one before
 // they were made).
 //
-// Usage: object_memory [--points 1000000] [--threads T]
+// With `--kernel euclidean` the same for the lean object (Euclidean_point_cloud_object): its
+// stages and its parts (no graph or CPSP map kept).
+//
+// Usage: object_memory [--points 1000000] [--threads T] [--kernel geodesic|euclidean] [--graph sig|knn]
+#include <PCCD/Euclidean_point_cloud_object.h>
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Random.h>
@@ -41,6 +45,81 @@ struct Stage_row {
     double ms = 0;
 };
 
+template <class Object>
+int measure(std::size_t n, std::optional<unsigned> threads, PCCD::Graph_kind graph);
+
+struct Part {
+    const char* name;
+    std::size_t bytes;
+};
+
+void print_table(const std::vector<Part>& parts, double N)
+{
+    std::printf("%-34s %14s %10s\n", "part", "bytes", "B/point");
+    std::size_t total = 0;
+    for (const Part& p : parts) {
+        std::printf("%-34s %14zu %10.1f\n", p.name, p.bytes, double(p.bytes) / N);
+        total += p.bytes;
+    }
+    std::printf("%-34s %14zu %10.1f\n", "total", total, double(total) / N);
+}
+
+/// The parts of the geodesic object.
+void print_parts(const PCCD::Point_cloud_object<>& o, double N)
+{
+    const std::size_t points = std::size_t(o.cloud().coordinates().size()) * sizeof(double);
+    const std::size_t kd_tree = o.cloud().kd_tree().memory_bytes() - points;
+    const std::size_t input_index = o.input_indices().capacity() * sizeof(std::uint32_t);
+    const std::size_t graph = o.graph().memory_bytes();
+    const auto& cpsp = o.cpsp();
+    const std::size_t cpsp_offsets = (cpsp.size() + 1) * sizeof(std::uint64_t);
+    const std::size_t cpsp_entry = cpsp.num_entries() * sizeof(std::uint32_t); // each of targets, distances, predecessors
+    const std::size_t normals = std::size_t(o.surface().normals().size()) * sizeof(double);
+    const std::size_t domain = std::size_t(o.surface().domain_radii().size()) * sizeof(double);
+    const bool shared_normals = &o.surface().normals() == &o.euclidean_surface().normals();
+    const bool shared_domain = &o.surface().domain_radii() == &o.euclidean_surface().domain_radii();
+    const std::size_t euclidean = (shared_normals ? 0 : normals) + (shared_domain ? 0 : domain);
+    const std::size_t hierarchy = o.hierarchy().memory_bytes();
+    const std::size_t outliers = o.scan().outliers.capacity() * sizeof(std::uint32_t);
+    const std::vector<Part> parts{
+        {"points (kd-tree's coordinates)", points},
+        {"kd-tree (permutation, nodes)", kd_tree},
+        {"input_index", input_index},
+        {"proximity graph", graph},
+        {"CPSP map: offsets", cpsp_offsets},
+        {"CPSP map: targets", cpsp_entry},
+        {"CPSP map: distances (float)", cpsp_entry},
+        {"CPSP map: predecessors", cpsp_entry},
+        {"normals (geodesic surface)", normals},
+        {"domain radii (geodesic surface)", domain},
+        {"euclidean surface's own copies", euclidean},
+        {"hierarchy", hierarchy},
+        {"outlier list", outliers},
+    };
+    std::printf("\nParts of the object (%zu points, %zu graph edges, %.2f CPSP entries per point, hierarchy %zu B):\n",
+                o.size(), o.graph().num_edges(), double(cpsp.num_entries()) / N, hierarchy);
+    print_table(parts, N);
+    std::printf("euclidean surface shares the normals: %s, the domain radii: %s\n", shared_normals ? "yes" : "no",
+                shared_domain ? "yes" : "no");
+}
+
+/// The parts of the lean object.
+void print_parts(const PCCD::Euclidean_point_cloud_object<>& o, double N)
+{
+    const std::size_t points = std::size_t(o.cloud().coordinates().size()) * sizeof(double);
+    const std::vector<Part> parts{
+        {"points (kd-tree's coordinates)", points},
+        {"kd-tree (permutation, nodes)", o.cloud().kd_tree().memory_bytes() - points},
+        {"input_index", o.input_indices().capacity() * sizeof(std::uint32_t)},
+        {"normals", std::size_t(o.normals().size()) * sizeof(double)},
+        {"domain radii", std::size_t(o.domain_radii().size()) * sizeof(double)},
+        {"hierarchy", o.hierarchy().memory_bytes()},
+        {"outlier list", o.scan().outliers.capacity() * sizeof(std::uint32_t)},
+    };
+    std::printf("\nParts of the lean object (%zu points, Euclidean kernel, no graph or CPSP map):\n", o.size());
+    print_table(parts, N);
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -49,19 +128,34 @@ int main(int argc, char** argv)
     mallopt(M_MMAP_THRESHOLD, 1 << 20);
     std::size_t n = 1000000;
     std::optional<unsigned> threads;
+    std::string kernel = "geodesic";
+    PCCD::Graph_kind graph = PCCD::Graph_kind::sphere_of_influence;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string a = argv[i];
         if (a == "--points")
             n = std::size_t(std::atoll(argv[i + 1]));
         else if (a == "--threads")
             threads = unsigned(std::atoi(argv[i + 1]));
+        else if (a == "--kernel" && (std::string(argv[i + 1]) == "geodesic" || std::string(argv[i + 1]) == "euclidean"))
+            kernel = argv[i + 1];
+        else if (a == "--graph" && (std::string(argv[i + 1]) == "knn" || std::string(argv[i + 1]) == "sig"))
+            graph = std::string(argv[i + 1]) == "knn" ? PCCD::Graph_kind::knn : PCCD::Graph_kind::sphere_of_influence;
         else {
-            std::fprintf(stderr, "usage: object_memory [--points 1000000] [--threads T]\n");
+            std::fprintf(stderr, "usage: object_memory [--points 1000000] [--threads T] [--kernel geodesic|euclidean] [--graph sig|knn]\n");
             return 2;
         }
     }
+    if (kernel == "euclidean") return measure<PCCD::Euclidean_point_cloud_object<>>(n, threads, graph);
+    return measure<PCCD::Point_cloud_object<>>(n, threads, graph);
+}
+
+namespace {
+
+template <class Object>
+int measure(std::size_t n, std::optional<unsigned> threads, PCCD::Graph_kind graph)
+{
     const auto path = std::filesystem::path(PCCD_DATA_DIR) / "bunny00.off";
-    std::optional<PCCD::Point_cloud_object<>> object;
+    std::optional<Object> object;
     std::vector<Stage_row> rows;
     long long before = 0, built_peak = 0;
     const long long baseline = status_bytes("VmRSS");
@@ -74,6 +168,7 @@ int main(int argc, char** argv)
         cloud.normals = Eigen::Matrix3Xd(); // only the points are given to the object
         PCCD::Point_cloud_object_options options;
         options.threads = threads;
+        options.graph = graph;
         options.progress = [&](const PCCD::Preprocessing_progress& p) {
             if (!p.finished) {
                 Stage_row row{p.stage};
@@ -108,50 +203,9 @@ int main(int argc, char** argv)
     std::printf("before: %.1f MB, peak during construction: %.1f MB (%.1f B/point above the start)\n", before / 1e6,
                 built_peak / 1e6, double(built_peak - before) / N);
 
-    const auto& o = *object;
-    const std::size_t points = std::size_t(o.cloud().coordinates().size()) * sizeof(double);
-    const std::size_t kd_tree = o.cloud().kd_tree().memory_bytes() - points;
-    const std::size_t input_index = o.input_indices().capacity() * sizeof(std::uint32_t);
-    const std::size_t graph = o.graph().memory_bytes();
-    const auto& cpsp = o.cpsp();
-    const std::size_t cpsp_offsets = (cpsp.size() + 1) * sizeof(std::uint64_t);
-    const std::size_t cpsp_entry = cpsp.num_entries() * sizeof(std::uint32_t); // each of targets, distances, predecessors
-    const std::size_t normals = std::size_t(o.surface().normals().size()) * sizeof(double);
-    const std::size_t domain = std::size_t(o.surface().domain_radii().size()) * sizeof(double);
-    const bool shared_normals = &o.surface().normals() == &o.euclidean_surface().normals();
-    const bool shared_domain = &o.surface().domain_radii() == &o.euclidean_surface().domain_radii();
-    const std::size_t euclidean = (shared_normals ? 0 : normals) + (shared_domain ? 0 : domain);
-    const std::size_t hierarchy = o.hierarchy().memory_bytes();
-    const std::size_t outliers = o.scan().outliers.capacity() * sizeof(std::uint32_t);
-    struct Part {
-        const char* name;
-        std::size_t bytes;
-    };
-    const std::vector<Part> parts{
-        {"points (kd-tree's coordinates)", points},
-        {"kd-tree (permutation, nodes)", kd_tree},
-        {"input_index", input_index},
-        {"proximity graph", graph},
-        {"CPSP map: offsets", cpsp_offsets},
-        {"CPSP map: targets", cpsp_entry},
-        {"CPSP map: distances (float)", cpsp_entry},
-        {"CPSP map: predecessors", cpsp_entry},
-        {"normals (geodesic surface)", normals},
-        {"domain radii (geodesic surface)", domain},
-        {"euclidean surface's own copies", euclidean},
-        {"hierarchy", hierarchy},
-        {"outlier list", outliers},
-    };
-    std::printf("\nParts of the object (%zu points, %zu graph edges, %.2f CPSP entries per point, hierarchy %zu B):\n",
-                o.size(), o.graph().num_edges(), double(cpsp.num_entries()) / N, hierarchy);
-    std::printf("%-34s %14s %10s\n", "part", "bytes", "B/point");
-    std::size_t total = 0;
-    for (const Part& p : parts) {
-        std::printf("%-34s %14zu %10.1f\n", p.name, p.bytes, double(p.bytes) / N);
-        total += p.bytes;
-    }
-    std::printf("%-34s %14zu %10.1f\n", "total", total, double(total) / N);
-    std::printf("euclidean surface shares the normals: %s, the domain radii: %s\n", shared_normals ? "yes" : "no",
-                shared_domain ? "yes" : "no");
+    print_parts(*object, N);
     std::printf("resident set held by the object: %.1f MB (%.1f B/point)\n", held / 1e6, double(held) / N);
+    return 0;
 }
+
+} // namespace

@@ -48,6 +48,8 @@ int main(int argc, char** argv)
     app.add_option("--contact-tolerance", tolerance, "verification tolerance in sampling radii (default: automatic)");
     bool no_domain = false, no_verify = false, cad = false, no_certify = false;
     std::vector<std::size_t> densities = PCCD::testing::cad_densities();
+    bool lean = false;
+    app.add_flag("--lean", lean, "also the lean object (Euclidean kernel) of every cloud, its verdicts against the default's");
     app.add_flag("--cad", cad, "CAD and mechanical parts at four densities (clean, noise 0.3, 0.6, 1 % outliers)");
     app.add_option("--densities", densities, "with --cad: points per clean cloud");
     app.add_flag("--no-certify", no_certify, "answer separate without the certification pass");
@@ -75,7 +77,7 @@ int main(int argc, char** argv)
                 for (std::size_t c = 0; c < cad_conditions.size(); ++c) {
                     if (!conditions.empty() && std::find(conditions.begin(), conditions.end(), c) == conditions.end())
                         continue;
-                    const auto cloud = PCCD::testing::make_scan_cloud(model, cad_conditions[c], 2026 + c, object_options);
+                    const auto cloud = PCCD::testing::make_scan_cloud(model, cad_conditions[c], 2026 + c, object_options, lean);
                     auto row = PCCD::testing::evaluate_first_hits(model, cad_conditions[c], cloud, truth, verbose, query_options);
                     row.condition = std::to_string(density) + " " + cad_conditions[c].name;
                     PCCD::testing::print_scan_row(row);
@@ -111,7 +113,7 @@ int main(int argc, char** argv)
                     truth.size());
         for (std::size_t c : conditions) {
             const PCCD::testing::Scan_condition& condition = all.at(c);
-            const PCCD::testing::Scan_cloud cloud = PCCD::testing::make_scan_cloud(model, condition, 2026 + c, object_options);
+            const PCCD::testing::Scan_cloud cloud = PCCD::testing::make_scan_cloud(model, condition, 2026 + c, object_options, lean);
             rows.push_back(PCCD::testing::evaluate_first_hits(model, condition, cloud, truth, verbose, query_options));
             PCCD::testing::print_scan_table_header();
             PCCD::testing::print_scan_row(rows.back());

@@ -7,7 +7,7 @@
 //
 //   tunnel_clearance_benchmark [--scene-points 1000000] [--wagon-points 100000] [--poses 60] [--margin 0.05]
 //                       [--cap 0.2] [--seed 1] [--threads T] [--repetitions 5] [--write-scene DIR]
-//                       [--csv FILE]
+//                       [--csv FILE] [--kernel geodesic|euclidean]  (the tunnel's object; the wagon is geodesic)
 //
 // Per pose (wagon pose from the scene's path, tunnel at the identity), three answers:
 //   exact   exact_distance(wagon mesh, pose, tunnel mesh, identity): the clearance (0 if touching);
@@ -39,6 +39,7 @@
 
 #include <PCCD/Exact/Exact_mesh.h>
 #include <PCCD/Exact/mesh_distance.h>
+#include <PCCD/Euclidean_point_cloud_object.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Proximity/distance.h>
 #include <PCCD/Proximity/distance_many.h>
@@ -59,6 +60,7 @@
 #include <string>
 #include <thread>
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
 namespace {
@@ -74,6 +76,9 @@ struct Arguments {
     int repetitions = 5;
     std::string write_scene;
     std::string csv;
+    /// The tunnel's object: geodesic (Point_cloud_object) or euclidean (the lean
+    /// Euclidean_point_cloud_object); the wagon is a Point_cloud_object either way.
+    std::string kernel = "geodesic";
 };
 
 Arguments parse(int argc, char** argv)
@@ -92,6 +97,7 @@ Arguments parse(int argc, char** argv)
         else if (key == "--repetitions") a.repetitions = std::stoi(value);
         else if (key == "--write-scene") a.write_scene = value;
         else if (key == "--csv") a.csv = value;
+        else if (key == "--kernel" && (value == "geodesic" || value == "euclidean")) a.kernel = value;
         else throw std::invalid_argument("unknown option " + key);
     }
     if (a.repetitions < 1) throw std::invalid_argument("--repetitions must be >= 1");
@@ -249,6 +255,9 @@ void run(const Arguments& args)
                 std::size_t(scene.tunnel_points.cols()), tree_s, after_tree[1] - before_tree[0]);
     std::fflush(stdout);
 
+    // The rest for the tunnel object of --kernel.
+    const auto with_tunnel = [&](auto tag) {
+    using Tunnel = typename decltype(tag)::type;
     const PCCD::Point_cloud_object_options object_options{.threads = args.threads};
     reset_peak_memory();
     const auto before_objects = memory_mib();
@@ -256,7 +265,7 @@ void run(const Arguments& args)
     const PCCD::Point_cloud_object<> wagon(scene.wagon_points, object_options);
     const double wagon_s = PCCD::testing::seconds_since(start);
     start = Clock::now();
-    const PCCD::Point_cloud_object<> tunnel(scene.tunnel_points, object_options);
+    const Tunnel tunnel(scene.tunnel_points, object_options);
     const double tunnel_s = PCCD::testing::seconds_since(start);
     const auto after_objects = memory_mib();
     const double spacing = tunnel.cloud().mean_spacing();
@@ -291,7 +300,7 @@ void run(const Arguments& args)
 
     // The whole path at once on --threads threads (wall time).
     if (args.threads) {
-        std::vector<PCCD::Posed_pair<PCCD::Point_cloud_object<>, PCCD::Point_cloud_object<>>> pairs;
+        std::vector<PCCD::Posed_pair<PCCD::Point_cloud_object<>, Tunnel>> pairs;
         for (const auto& p : scene.path) pairs.push_back({&wagon, p.pose, &tunnel, identity});
         start = Clock::now();
         const auto batch = PCCD::distance_many(pairs, {.threads = args.threads}, options);
@@ -409,6 +418,11 @@ void run(const Arguments& args)
             }
     }
     std::fflush(stdout);
+    };
+    if (args.kernel == "euclidean")
+        with_tunnel(std::type_identity<PCCD::Euclidean_point_cloud_object<>>{});
+    else
+        with_tunnel(std::type_identity<PCCD::Point_cloud_object<>>{});
 }
 
 } // namespace
@@ -418,9 +432,9 @@ int main(int argc, char** argv)
     try {
         const Arguments args = parse(argc, argv);
         std::printf("tunnel_clearance_benchmark: %zu scene points, %zu wagon points, %zu poses, margin %.3f m, cap %.3f m, seed %llu, "
-                    "%d repetitions (warm)\n",
+                    "%d repetitions (warm), tunnel kernel %s\n",
                     args.scene_points, args.wagon_points, args.poses, args.margin, args.cap,
-                    (unsigned long long)args.seed, args.repetitions);
+                    (unsigned long long)args.seed, args.repetitions, args.kernel.c_str());
         run(args);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "tunnel_clearance_benchmark: %s\n", e.what());

@@ -190,4 +190,27 @@ TEST_CASE("Lean object: bad input is rejected with a message", "[lean]")
     data.points = {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0)};
     data.normals = {Eigen::Vector3d(0, 0, 1)};
     CHECK_THROWS_AS(Lean(data), PCCD::Invalid_input);
+    const Eigen::Matrix3Xd cloud = pccd_test::sample_shape(pccd_test::unit_sphere(), 500, 0.0, 41).points;
+    CHECK_THROWS_WITH(Lean(cloud, PCCD::Point_cloud_object_options{.orientation_neighbors = 0}),
+                      Catch::Matchers::Contains("orientation_neighbors"));
+}
+
+TEST_CASE("Lean object: given normals decide the orientation, from a file's point data", "[lean]")
+{
+    const Eigen::Matrix3Xd p = pccd_test::sample_shape(pccd_test::unit_sphere(), 3000, 0.0, 51).points;
+    PCCD::Point_data data;
+    for (Eigen::Index i = 0; i < p.cols(); ++i) {
+        data.points.push_back(p.col(i));
+        data.normals.push_back(-p.col(i)); // inward: the hints win over the outward rule
+    }
+    const Lean lean(data);
+    CHECK(lean.normals_given());
+    REQUIRE(lean.size() == 3000);
+    std::size_t inward = 0;
+    for (std::uint32_t i = 0; i < lean.size(); ++i)
+        inward += lean.normals().col(i).dot(lean.cloud().position(i).template cast<double>()) < 0.0;
+    CHECK(inward == lean.size());
+    // The input index finds each point of the file again.
+    for (std::uint32_t i = 0; i < lean.size(); i += 97)
+        CHECK((lean.cloud().position(i).template cast<double>() - data.points[lean.input_index(i)]).norm() == 0.0);
 }

@@ -41,6 +41,7 @@ struct Clearance_cli_options {
     std::string tolerance;          // empty: automatic
     std::string relative_tolerance; // empty: 0
     std::string budget_us;          // empty or 0: none
+    std::string kernel = "auto";    // auto, geodesic or euclidean
     std::size_t max_node_pairs = 0; // 0: none
     bool penetration = false;
     bool orthonormalize = false;
@@ -179,18 +180,15 @@ void write_profile_png(const PCCD::Clearance_profile& p, const std::string& file
     pccd_render::write_png(file, pccd_render::plot_profile(plot, 800, 480));
 }
 
-void run_clearance(const Clearance_cli_options& o)
+/// The clearance of `points_object` along `poses` through `points_scene` (the same object when
+/// `same`), both preprocessed into an `Object`, and its output.
+template <class Object>
+void run_clearance_with(const Clearance_cli_options& o, double margin, const PCCD::Clearance_options& options,
+                        const std::vector<PCCD::Rigid_transform_3<double>>& poses, bool same,
+                        const Object_points& points_object, const std::optional<Object_points>& points_scene)
 {
-    // Everything is read and checked before the (slow) preprocessing.
-    const double margin = option_number(o.margin, "--margin", false);
-    const PCCD::Clearance_options options = clearance_options(o, margin);
-    const std::vector<PCCD::Rigid_transform_3<double>> poses = read_path(o.path, o.orthonormalize);
-    const bool same = same_file(o.file_object, o.file_scene);
-    const Object_points points_object = read_object_points(o.file_object, false);
-    const std::optional<Object_points> points_scene =
-        same ? std::nullopt : std::optional<Object_points>(read_object_points(o.file_scene, false));
-    const Prepared_object object = prepare_object(points_object, o.file_object);
-    const Prepared_object scene = same ? object : prepare_object(*points_scene, o.file_scene);
+    const Prepared_object<Object> object = prepare_object<Object>(points_object, o.file_object);
+    const Prepared_object<Object> scene = same ? object : prepare_object<Object>(*points_scene, o.file_scene);
 
     const Clock::time_point start = Clock::now();
     const PCCD::Clearance_profile p = PCCD::clearance(object.object, scene.object, poses, margin, options);
@@ -213,9 +211,9 @@ void run_clearance(const Clearance_cli_options& o)
         std::cout << r.dump(2) << '\n';
         return;
     }
-    const auto object_line = [](const char* name, const std::string& file, const Prepared_object& prepared) {
-        std::printf("%s: %s, %zu points, r(P) %.5g, preprocessed in %.1f ms\n", name, file.c_str(), prepared.object.size(),
-                    prepared.object.sampling_radius(), prepared.preprocess_ms);
+    const auto object_line = [](const char* name, const std::string& file, const Prepared_object<Object>& prepared) {
+        std::printf("%s: %s, %zu points, %s kernel, r(P) %.5g, preprocessed in %.1f ms\n", name, file.c_str(),
+                    prepared.object.size(), kernel_name<Object>(), prepared.object.sampling_radius(), prepared.preprocess_ms);
     };
     object_line("object", o.file_object, object);
     if (same)
@@ -249,12 +247,29 @@ void run_clearance(const Clearance_cli_options& o)
     std::printf("all_clear: %s\n", p.all_clear() ? "yes" : "no");
     std::printf("counters:");
     const nlohmann::ordered_json work = counters_json(c.work);
-    for (const auto& [name, value] : work.items()) std::printf(" %s %zu", name.c_str(), value.get<std::size_t>());
+    for (const auto& [name, value] : work.items()) std::printf(" %s %zu", name.c_str(), value.template get<std::size_t>());
     std::printf("\nquery_ms: %.1f\n", query_ms);
     if (!o.png.empty())
         std::printf("wrote %s: clearance per pose blue (dots red below the margin, grey beyond the cap), intervals light "
                     "blue, the margin red, the cap dashed grey, the first pose below the margin dashed red\n",
                     std::filesystem::absolute(o.png).c_str());
+}
+
+void run_clearance(const Clearance_cli_options& o)
+{
+    // Everything is read and checked before the (slow) preprocessing.
+    const double margin = option_number(o.margin, "--margin", false);
+    const PCCD::Clearance_options options = clearance_options(o, margin);
+    const std::vector<PCCD::Rigid_transform_3<double>> poses = read_path(o.path, o.orthonormalize);
+    const bool same = same_file(o.file_object, o.file_scene);
+    const Object_points points_object = read_object_points(o.file_object, false);
+    const std::optional<Object_points> points_scene =
+        same ? std::nullopt : std::optional<Object_points>(read_object_points(o.file_scene, false));
+    const std::size_t largest = std::max(points_object.points.size(), points_scene ? points_scene->points.size() : 0);
+    if (use_lean_kernel(o.kernel, largest))
+        run_clearance_with<PCCD::Euclidean_point_cloud_object<>>(o, margin, options, poses, same, points_object, points_scene);
+    else
+        run_clearance_with<PCCD::Point_cloud_object<>>(o, margin, options, poses, same, points_object, points_scene);
 }
 
 } // namespace
@@ -285,6 +300,11 @@ void register_clearance(CLI::App& app)
     cmd->add_option("--max-node-pairs", o->max_node_pairs,
                     "Budget per pose on the node pairs of the closest-pair walk (deterministic; default 0: none)");
     cmd->add_flag("--penetration", o->penetration, "For intersecting poses, also measure the penetration depth (depth)");
+    cmd->add_option("--kernel", o->kernel,
+                    "The objects' surface kernel: geodesic (Point_cloud_object), euclidean (the lean "
+                    "Euclidean_point_cloud_object, about a fifth of the memory) or auto (default: euclidean when a "
+                    "cloud has 10^6 points or more)")
+        ->check(CLI::IsMember({"auto", "geodesic", "euclidean"}));
     cmd->add_option("--seed", o->seed, "Seed of the queries (default 24301 = 0x5eed; pose i gets pair_seed(seed, i))");
     cmd->add_option("--threads", o->threads, "Worker threads (default 0: all available); the answers do not depend on it");
     cmd->add_flag("--orthonormalize", o->orthonormalize,

@@ -48,7 +48,7 @@ void run_render(const Render_options& o)
     if (!o.points.empty()) markers = PCCD::IO::read_points(o.points);
 
     const Prepared_object a = prepare_object(read_object_points(o.file_a, o.normalize), o.file_a);
-    std::optional<Prepared_object> b;
+    std::optional<Prepared_object<>> b;
     if (!o.file_b.empty()) b = prepare_object(read_object_points(o.file_b, o.normalize), o.file_b);
 
     pccd_render::Scene scene;

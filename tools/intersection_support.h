@@ -8,6 +8,7 @@
 #include <PCCD/Error.h>
 #include <PCCD/IO/read_points.h>
 #include <PCCD/Intersection/do_intersect.h>
+#include <PCCD/Euclidean_point_cloud_object.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Similarity_3.h>
 
@@ -102,19 +103,41 @@ inline Object_points read_object_points(const std::string& path, bool normalize)
     return {std::move(data.points), std::move(data.normals)};
 }
 
-/// A preprocessed object and the wall time its preprocessing took.
+/// A preprocessed object (Point_cloud_object, or the lean Euclidean_point_cloud_object) and the wall
+/// time its preprocessing took.
+template <class Object = PCCD::Point_cloud_object<>>
 struct Prepared_object {
-    PCCD::Point_cloud_object<> object;
+    Object object;
     double preprocess_ms;
 };
 
-/// A prepared object as the JSON outputs report it: file, points, sampling radius, preprocessing time.
-inline nlohmann::ordered_json object_json(const std::string& file, const Prepared_object& prepared)
+/// The name of an object's kernel in the outputs: "geodesic" or "euclidean".
+template <class Object>
+constexpr const char* kernel_name()
+{
+    return PCCD::GeodesicCollisionObject<Object> ? "geodesic" : "euclidean";
+}
+
+/// A prepared object as the JSON outputs report it: file, points, kernel, sampling radius,
+/// preprocessing time.
+template <class Object>
+nlohmann::ordered_json object_json(const std::string& file, const Prepared_object<Object>& prepared)
 {
     return {{"file", file},
             {"points", prepared.object.size()},
+            {"kernel", kernel_name<Object>()},
             {"sampling_radius", prepared.object.sampling_radius()},
             {"preprocess_ms", prepared.preprocess_ms}};
+}
+
+/// `--kernel`: which object the points make. auto: the lean object (Euclidean kernel) when a cloud
+/// of the query has at least `lean_from_points` points, the geodesic one otherwise.
+inline constexpr std::size_t lean_from_points = 1000000;
+inline bool use_lean_kernel(const std::string& kernel, std::size_t largest_cloud)
+{
+    if (kernel == "euclidean") return true;
+    if (kernel == "geodesic") return false;
+    return largest_cloud >= lean_from_points;
 }
 
 /// A vector as a JSON array of three numbers; null when an entry is NaN or infinite (an answer
@@ -131,13 +154,14 @@ inline nlohmann::ordered_json vector_json(const Eigen::Vector3d& v)
 /// \throws PCCD::Invalid_input, naming `name`, when no point has a normal: the points are too few
 ///         or too degenerate (e.g. all on one line) to make a surface, and every query would answer
 ///         "separate" without looking.
-inline Prepared_object prepare_object(const Object_points& input, const std::string& name,
-                                      const std::string& volume = "box_and_slab")
+template <class Object = PCCD::Point_cloud_object<>>
+Prepared_object<Object> prepare_object(const Object_points& input, const std::string& name,
+                                       const std::string& volume = "box_and_slab")
 {
     const Clock::time_point start = Clock::now();
     PCCD::Point_cloud_object_options options;
     options.hierarchy.volume = volume_from_name(volume);
-    PCCD::Point_cloud_object<> object(input, with_progress(options, name));
+    Object object(input, with_progress(options, name));
     if (object.orientation().unoriented == object.size())
         throw PCCD::Invalid_input(name + ": no point has a surface normal: its " + std::to_string(object.size()) +
                                   " points are too few or too degenerate (e.g. all on one line) to make a surface");

@@ -18,21 +18,25 @@
 #include <Eigen/Core>
 
 #include <PCCD/Point_cloud_object.h>
+#include <PCCD/Surface/internal/knn_orientation_graph.h>
 
 namespace PCCD {
 
 /// A preprocessed point cloud whose implicit surface uses the Euclidean kernel: f(x) is the WLS fit
 /// over the points within the support radius of x in space (Euclidean_distance), not along the
 /// surface. It keeps the points (in spatial order) with their kd-tree, the input index of each
-/// point, the oriented normals, the domain radii and the hierarchy; the proximity graph is built
-/// only to orient the normals and freed, and no CPSP map is built.
+/// point, the oriented normals, the domain radii and the hierarchy; a bare k-NN graph is built only
+/// to orient the normals and freed, and no CPSP map is built.
 ///
 /// Preprocessing, in order: the kd-tree, the outliers (Outlier_options), the sampling radius r(P),
 /// the kernel (Bandwidth_options, with the noise-aware widening of Point_cloud_object), the
-/// unoriented normals and the noise estimate with the Euclidean kernel, the proximity graph
-/// (`options.graph`) and the orientation over it (with the given normals as hints, as in
-/// Point_cloud_object), the domain radii and the hierarchy. The options are
-/// Point_cloud_object_options; `cpsp`-only settings do not apply.
+/// unoriented normals and the noise estimate with the Euclidean kernel, the domain radii, the
+/// orientation of the normals (the rule of orient_normals(), with the given normals as hints as in
+/// Point_cloud_object) over the symmetric k-NN graph of `options.orientation_neighbors` neighbours,
+/// built bare for it and freed, and the hierarchy. Each stage frees what only it needed before the
+/// next starts, so that the peak stays near what the object keeps. The options are
+/// Point_cloud_object_options; those of the proximity graph (`graph`, `sphere_of_influence`, the
+/// long edges) do not apply.
 ///
 /// What it gives up against Point_cloud_object: the Euclidean kernel bleeds across gaps thinner than
 /// twice the support radius (two faces of a thin wall, fingers that nearly touch), where the
@@ -132,8 +136,6 @@ private:
 
     static std::shared_ptr<const Data> from_point_data(const Point_data& data, const Point_cloud_object_options& options)
     {
-        Eigen::Matrix3Xd points(3, Eigen::Index(data.points.size()));
-        for (std::size_t i = 0; i < data.points.size(); ++i) points.col(Eigen::Index(i)) = data.points[i];
         std::optional<Eigen::Matrix3Xd> normals;
         if (data.has_normals()) {
             if (data.normals.size() != data.points.size())
@@ -142,9 +144,9 @@ private:
             normals.emplace(3, Eigen::Index(data.normals.size()));
             for (std::size_t i = 0; i < data.normals.size(); ++i) normals->col(Eigen::Index(i)) = data.normals[i];
         }
-        auto built = Base::timed_cloud(points, options);
-        points.resize(3, 0); // the cloud holds its own copy
-        return preprocess(std::move(built), std::move(normals), options);
+        // The points go straight from the data into the cloud (no copy between).
+        return preprocess(Base::timed_cloud(data.points, Identity_point_map<Eigen::Vector3d>(), options), std::move(normals),
+                          options);
     }
 
     static std::shared_ptr<const Data> preprocess(typename Base::Timed_cloud built,
@@ -155,20 +157,12 @@ private:
         Preprocessing_times timings;
         timings.kd_tree = built.milliseconds;
         std::vector<std::uint32_t> input_index = Base::checked_input(built, given_normals, options);
+        if (options.orientation_neighbors == 0)
+            throw Invalid_input("lean point cloud object: orientation_neighbors must be >= 1, got 0");
         options = resolve_threads(std::move(options));
         Scan_estimate scan;
         scan.input_points = cloud.size();
-        std::optional<Local_spacing> spacing;
-        {
-            internal::Stage_timer stage(options, Preprocessing_stage::outliers, cloud.size());
-            if (options.outliers.remove) {
-                spacing = local_spacing(cloud, options.outliers.neighbors, true, options.outliers.threads);
-                scan.outliers = find_outliers(*spacing, options.outliers);
-                Base::remove_outliers(cloud, given_normals, input_index, scan.outliers);
-                if (!scan.outliers.empty()) spacing.reset();
-            }
-            timings.outliers = stage.finish();
-        }
+        std::optional<Local_spacing> spacing = Base::outlier_stage(cloud, given_normals, input_index, options, scan, timings);
         internal::Stage_timer radius_stage(options, Preprocessing_stage::sampling_radius, cloud.size());
         const double r = PCCD::sampling_radius(cloud, options.sampling_radius);
         timings.sampling_radius = radius_stage.finish();
@@ -186,13 +180,18 @@ private:
             if (!wider || pass == 1) break;
             weight = *wider;
         }
+        estimate.residuals.resize(0); // the noise estimate is all they were for
+
+        // The domain radii from the local spacing, which goes with them.
+        Eigen::VectorXd domain = Base::domain_stage(cloud, spacing, options, timings);
+        spacing.reset();
+
+        // The normals are oriented over a bare symmetric k-NN graph, which goes.
         Orientation_report orientation;
         {
-            // The graph orients the normals and goes.
             internal::Stage_timer stage(options, Preprocessing_stage::graph, cloud.size());
-            const Proximity_graph graph = options.graph == Graph_kind::knn
-                                              ? knn_graph(cloud, options.knn)
-                                              : sphere_of_influence_graph(cloud, options.sphere_of_influence);
+            const internal::Orientation_graph graph =
+                internal::knn_orientation_graph(cloud, options.orientation_neighbors, options.knn.threads);
             timings.graph = stage.finish();
             internal::Stage_timer orientation_stage(options, Preprocessing_stage::orientation, cloud.size());
             orientation = given_normals
@@ -202,19 +201,13 @@ private:
         }
         const bool normals_given = given_normals.has_value();
         given_normals.reset();
-        internal::Stage_timer domain_stage(options, Preprocessing_stage::domain, cloud.size());
-        const bool reuse = spacing && spacing->k == std::min<std::size_t>(options.domain.neighbors, cloud.size() - 1);
-        Eigen::VectorXd domain = reuse ? surface_domain_radii(*spacing, options.domain)
-                                       : surface_domain_radii(cloud, options.domain);
-        spacing.reset();
-        timings.outliers += domain_stage.finish();
 
-        const Eigen::VectorXd reach = domain;
+        // The hierarchy's reaches are the domain radii (read before the surface takes them).
+        internal::Stage_timer stage(options, Preprocessing_stage::hierarchy, cloud.size());
+        Point_cloud_hierarchy hierarchy(cloud.coordinates(), domain, options.hierarchy);
+        timings.hierarchy = stage.finish();
         Surface surface(Euclidean_distance<K>(cloud), weight, std::move(estimate.normals), std::move(domain),
                         options.surface_fit);
-        internal::Stage_timer stage(options, Preprocessing_stage::hierarchy, cloud.size());
-        Point_cloud_hierarchy hierarchy(cloud.coordinates(), reach, options.hierarchy);
-        timings.hierarchy = stage.finish();
         return std::make_shared<const Data>(Data{std::move(cloud), r, orientation, normals_given, std::move(scan), timings,
                                                  std::move(surface), std::move(hierarchy), std::move(input_index)});
     }

@@ -252,8 +252,8 @@ public:
     /// @}
 
 private:
-    // The lean object shares the input stages (its preprocessing reads timed_cloud, checked_input
-    // and remove_outliers).
+    // The lean object shares the first stages (timed_cloud, checked_input, outlier_stage,
+    // domain_stage).
     template <PointCloudKernel>
     friend class Euclidean_point_cloud_object;
 
@@ -364,6 +364,16 @@ private:
     /// those points, ascending.
     static void remove_outliers(Point_cloud<K>& cloud, std::optional<Eigen::Matrix3Xd>& given_normals,
                                 std::vector<std::uint32_t>& input_index, std::vector<std::uint32_t>& outliers);
+    /// The outlier stage (Outlier_options): finds and removes the isolated outliers (scan.outliers,
+    /// timings.outliers); returns the local spacing it measured when the cloud did not change, for
+    /// the domain radii.
+    static std::optional<Local_spacing> outlier_stage(Point_cloud<K>& cloud, std::optional<Eigen::Matrix3Xd>& given_normals,
+                                                      std::vector<std::uint32_t>& input_index,
+                                                      const Point_cloud_object_options& options, Scan_estimate& scan,
+                                                      Preprocessing_times& timings);
+    /// The domain radii (Surface_domain_options), from `spacing` when it has the domain's k.
+    static Eigen::VectorXd domain_stage(const Point_cloud<K>& cloud, const std::optional<Local_spacing>& spacing,
+                                        const Point_cloud_object_options& options, Preprocessing_times& timings);
     /// Checks the cloud and the options; returns each point's input index (the identity when the
     /// points kept their order) and puts the given normals in the cloud's order.
     static std::vector<std::uint32_t> checked_input(Timed_cloud& built, std::optional<Eigen::Matrix3Xd>& given_normals,

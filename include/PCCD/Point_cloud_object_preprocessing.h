@@ -97,6 +97,36 @@ std::vector<std::uint32_t> Point_cloud_object<K>::checked_input(Timed_cloud& bui
 }
 
 template <PointCloudKernel K>
+std::optional<Local_spacing> Point_cloud_object<K>::outlier_stage(Point_cloud<K>& cloud,
+                                                                  std::optional<Eigen::Matrix3Xd>& given_normals,
+                                                                  std::vector<std::uint32_t>& input_index,
+                                                                  const Point_cloud_object_options& options,
+                                                                  Scan_estimate& scan, Preprocessing_times& timings)
+{
+    std::optional<Local_spacing> spacing;
+    internal::Stage_timer stage(options, Preprocessing_stage::outliers, cloud.size());
+    if (options.outliers.remove) {
+        spacing = local_spacing(cloud, options.outliers.neighbors, true, options.outliers.threads);
+        scan.outliers = find_outliers(*spacing, options.outliers);
+        remove_outliers(cloud, given_normals, input_index, scan.outliers);
+        if (!scan.outliers.empty()) spacing.reset(); // the cloud changed
+    }
+    timings.outliers = stage.finish();
+    return spacing;
+}
+
+template <PointCloudKernel K>
+Eigen::VectorXd Point_cloud_object<K>::domain_stage(const Point_cloud<K>& cloud, const std::optional<Local_spacing>& spacing,
+                                                    const Point_cloud_object_options& options, Preprocessing_times& timings)
+{
+    internal::Stage_timer stage(options, Preprocessing_stage::domain, cloud.size());
+    const bool reuse = spacing && spacing->k == std::min<std::size_t>(options.domain.neighbors, cloud.size() - 1);
+    Eigen::VectorXd domain = reuse ? surface_domain_radii(*spacing, options.domain) : surface_domain_radii(cloud, options.domain);
+    timings.outliers += stage.finish();
+    return domain;
+}
+
+template <PointCloudKernel K>
 Gaussian_weight Point_cloud_object<K>::fit_kernel(const Point_cloud<K>& cloud, const Proximity_graph& graph, double r,
                                                   const Point_cloud_object_options& options,
                                                   std::shared_ptr<const Close_pairs_shortest_paths>& cpsp,
@@ -139,17 +169,7 @@ auto Point_cloud_object<K>::preprocess(Timed_cloud built, std::optional<Eigen::M
     scan.input_points = cloud.size();
     // One local-spacing pass serves the outlier test and, when no point was removed and both
     // use the same k, the domain radii below.
-    std::optional<Local_spacing> spacing;
-    {
-        internal::Stage_timer stage(options, Preprocessing_stage::outliers, cloud.size());
-        if (options.outliers.remove) {
-            spacing = local_spacing(cloud, options.outliers.neighbors, true, options.outliers.threads);
-            scan.outliers = find_outliers(*spacing, options.outliers);
-            remove_outliers(cloud, given_normals, input_index, scan.outliers);
-            if (!scan.outliers.empty()) spacing.reset(); // the cloud changed
-        }
-        timings.outliers = stage.finish();
-    }
+    const std::optional<Local_spacing> spacing = outlier_stage(cloud, given_normals, input_index, options, scan, timings);
 
     std::shared_ptr<const Proximity_graph> graph;
     {
@@ -173,11 +193,7 @@ auto Point_cloud_object<K>::preprocess(Timed_cloud built, std::optional<Eigen::M
         given_normals ? orient_normals_with_hints(*graph, cloud.coordinates(), estimate.normals, *given_normals)
                       : orient_normals(*graph, cloud.coordinates(), estimate.normals);
     timings.normals += orientation_stage.finish();
-    internal::Stage_timer domain_stage(options, Preprocessing_stage::domain, cloud.size());
-    const bool reuse = spacing && spacing->k == std::min<std::size_t>(options.domain.neighbors, cloud.size() - 1);
-    Eigen::VectorXd domain = reuse ? surface_domain_radii(*spacing, options.domain)
-                                   : surface_domain_radii(cloud, options.domain);
-    timings.outliers += domain_stage.finish();
+    Eigen::VectorXd domain = domain_stage(cloud, spacing, options, timings);
 
     return std::make_shared<const Data>(make_data(std::move(cloud), std::move(graph), std::move(cpsp), r, weight,
                                                   std::move(estimate.normals), std::move(domain), orientation,

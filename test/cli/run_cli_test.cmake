@@ -461,6 +461,14 @@ elseif(CASE MATCHES "^clearance_")
     # The torus (outer radius 1) as the scene: the same gaps.
     pccd_run(OK ARGS clearance sphere.xyz torus.ply --path clearance_path.csv --margin 0.6 --threads 1
              STDOUT_MATCH "\nfirst_below_margin: 6 " "\nminimum: 7, ")
+    # The lean object (--kernel euclidean; auto picks it from 10^6 points): the same gaps, the same
+    # first pose below the margin; the geodesic object by default at 2000 points.
+    pccd_run(OK ARGS clearance sphere.xyz sphere.xyz --path clearance_path.csv --margin 0.6 --kernel euclidean
+             STDOUT_MATCH "object: sphere.xyz, 2000 points, euclidean kernel"
+                          "\npose,status,clearance,lower_bound,upper_bound\n0,clear,(1\.9[6-9]|2\.0[0-4])[0-9]*,"
+                          "\n5,clear,0\.7[0-9]*," "\n6,below_margin,0\.[45][0-9]*," "\nfirst_below_margin: 6 " "\nminimum: 7, ")
+    pccd_run(OK ARGS clearance sphere.xyz torus.ply --path clearance_path.csv --margin 0.6 --kernel auto
+             STDOUT_MATCH "object: sphere.xyz, 2000 points, geodesic kernel" "\nfirst_below_margin: 6 ")
   elseif(CASE STREQUAL "clearance_json")
     pccd_run(OK ARGS clearance sphere.xyz sphere.xyz --path clearance_path.csv --margin 0.6 --seed 5 --threads 2 --json
              MATCH "\"poses\": 8," "\"margin\": 0.6," "\"max_distance\": null," "\"samples\": .\n"
@@ -468,7 +476,7 @@ elseif(CASE MATCHES "^clearance_")
                    "\"first_below_margin\": 6," "\"first_point_object\": .\n" "\"minimum\": 7,"
                    "\"first_undecided\": null," "\"all_clear\": false," "\"counters\": {\n +\"clear\": 6,"
                    "\"below_margin\": 2," "\"work\": {\n +\"node_pairs\": [0-9]+" "\"intersection_f_evaluations\": [0-9]+"
-                   "\"query_ms\": [0-9.e+-]+")
+                   "\"query_ms\": [0-9.e+-]+" "\"kernel\": \"geodesic\"")
     file(WRITE ${WORK}/clearance.json "${PCCD_STDOUT}")
     string(JSON n LENGTH "${PCCD_STDOUT}" samples)
     if(NOT n EQUAL 8)
@@ -526,6 +534,8 @@ elseif(CASE MATCHES "^clearance_")
     pccd_run(FAIL ARGS clearance sphere.xyz sphere.xyz --path clearance_path.csv --margin nan
              MATCH "pccd: error: --margin: \"nan\" is not a finite number")
     pccd_run(FAIL ARGS clearance sphere.xyz sphere.xyz --path clearance_path.csv MATCH "--margin is required")
+    pccd_run(FAIL ARGS clearance sphere.xyz sphere.xyz --path clearance_path.csv --margin 0.6 --kernel lean
+             MATCH "--kernel: lean not in \\{auto,geodesic,euclidean\\}")
     pccd_run(FAIL ARGS clearance sphere.xyz sphere.xyz --margin 0.5 MATCH "--path is required")
     pccd_run(FAIL ARGS clearance sphere.xyz sphere.xyz --path clearance_path.csv --margin 0.6 --max-distance 0.5
              MATCH "pccd: error: --max-distance 0.5: must be >= the margin 0.6")

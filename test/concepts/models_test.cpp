@@ -2,6 +2,7 @@
 // rejected; plus a user-defined point type going through a point map.
 // Also covers Point_traits.h: the test cases below exercise what it declares.
 #include <PCCD/Eigen_kernel.h>
+#include <PCCD/Euclidean_point_cloud_object.h>
 #include <PCCD/Identity_point_map.h>
 #include <PCCD/Intersection/Intersection_visitor.h>
 #include <PCCD/Intersection/do_intersect.h>
@@ -53,6 +54,13 @@ static_assert(PCCD::ProximityObject<PCCD::Point_cloud_object<PCCD::Eigen_kernel<
 static_assert(PCCD::ProximityObject<PCCD::Point_cloud_object<PCCD::Eigen_kernel<float>>>);
 static_assert(PCCD::ProximityObject<PCCD::Point_cloud_object<Epick>>);
 static_assert(PCCD::ProximityObject<PCCD::Point_cloud_object<Sc_double>>);
+static_assert(PCCD::GeodesicCollisionObject<PCCD::Point_cloud_object<PCCD::Eigen_kernel<float>>>);
+static_assert(PCCD::GeodesicCollisionObject<PCCD::Point_cloud_object<Epick>>);
+static_assert(PCCD::EuclideanCollisionObject<PCCD::Euclidean_point_cloud_object<PCCD::Eigen_kernel<double>>>);
+static_assert(PCCD::EuclideanCollisionObject<PCCD::Euclidean_point_cloud_object<PCCD::Eigen_kernel<float>>>);
+static_assert(PCCD::EuclideanCollisionObject<PCCD::Euclidean_point_cloud_object<Epick>>);
+static_assert(PCCD::ProximityObject<PCCD::Euclidean_point_cloud_object<Sc_double>>);
+static_assert(!PCCD::GeodesicCollisionObject<PCCD::Euclidean_point_cloud_object<>>);
 static_assert(!PCCD::ProximityObject<PCCD::Point_cloud<>>);
 static_assert(PCCD::LeafIntersector<PCCD::Interpolation_search, PCCD::Point_cloud_object<>, PCCD::Point_cloud_object<>>);
 static_assert(PCCD::LeafIntersector<PCCD::Randomized_sampling, PCCD::Point_cloud_object<>, PCCD::Point_cloud_object<Epick>>);

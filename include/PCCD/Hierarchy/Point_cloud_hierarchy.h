@@ -114,18 +114,25 @@ public:
     Point_cloud_hierarchy(const Eigen::MatrixBase<Derived>& points, const Eigen::VectorXd& reach,
                           const Point_cloud_hierarchy_options& options = {})
     {
-        const Eigen::Matrix3Xd coordinates = checked_points(points, reach, options.leaf_size, options.threads);
-        const std::size_t n = std::size_t(coordinates.cols());
         m_leaf_size = options.leaf_size;
         m_volume = options.volume;
         m_has_reach = reach.size() != 0;
-        m_order.resize(n);
-        std::iota(m_order.begin(), m_order.end(), Index(0));
-        internal::with_threads(options.threads, [&] {
-            build_tree(coordinates);
-            order_points(coordinates, reach);
-            finish();
-        });
+        const auto build_all = [&](const Eigen::Matrix3Xd& coordinates) {
+            m_order.resize(std::size_t(coordinates.cols()));
+            std::iota(m_order.begin(), m_order.end(), Index(0));
+            internal::with_threads(options.threads, [&] {
+                build_tree(coordinates);
+                order_points(coordinates, reach);
+                finish();
+            });
+        };
+        // Points of doubles are read where they are; others are converted (one copy).
+        if constexpr (std::is_same_v<Derived, Eigen::Matrix3Xd>) {
+            check_points(points.derived(), reach, options.leaf_size, options.threads);
+            build_all(points.derived());
+        } else {
+            build_all(checked_points(points, reach, options.leaf_size, options.threads));
+        }
     }
 
     /// The hierarchy `layout` describes (as layout() returned it, e.g. read from a file) over the
@@ -291,13 +298,22 @@ private:
         static_assert(Derived::RowsAtCompileTime == 3 || Derived::RowsAtCompileTime == Eigen::Dynamic,
                       "Point_cloud_hierarchy needs a 3 x N matrix of points");
         if (points.rows() != 3) throw Invalid_input("point cloud hierarchy: the points must be a 3 x N matrix");
-        const std::size_t n = std::size_t(points.cols());
+        if (points.cols() == 0) throw Invalid_input("point cloud hierarchy: the cloud is empty");
+        Eigen::Matrix3Xd coordinates = points.template cast<double>();
+        check_points(coordinates, reach, leaf_size, threads);
+        return coordinates;
+    }
+
+    /// The checks of checked_points() on points of doubles, read in place.
+    static void check_points(const Eigen::Matrix3Xd& coordinates, const Eigen::VectorXd& reach, std::size_t leaf_size,
+                             const std::optional<unsigned>& threads)
+    {
+        const std::size_t n = std::size_t(coordinates.cols());
         if (n == 0) throw Invalid_input("point cloud hierarchy: the cloud is empty");
         if (n >= std::size_t(std::numeric_limits<Index>::max()))
             throw Invalid_input("point cloud hierarchy: too many points (at most 2^32 - 2)");
         if (leaf_size == 0) throw Invalid_input("point cloud hierarchy: leaf_size must be >= 1");
         internal::check_threads(threads, "point cloud hierarchy: threads");
-        Eigen::Matrix3Xd coordinates = points.template cast<double>();
         for (Eigen::Index i = 0; i < coordinates.cols(); ++i)
             if (!internal::all_finite(coordinates.col(i)))
                 throw Invalid_input(internal::concat("point cloud hierarchy: point ", i, " is not finite"));
@@ -307,7 +323,6 @@ private:
             if (!(std::isfinite(reach(i)) && reach(i) >= 0.0))
                 throw Invalid_input(internal::concat("point cloud hierarchy: the reach of point ", i, " (", reach(i),
                                                      ") must be finite and >= 0"));
-        return coordinates;
     }
 
     /// Builds the tree into m_nodes. The median splits fix every subtree's size from its point count
@@ -355,8 +370,18 @@ private:
 
     /// The slab of every node: the points' second moments are summed bottom-up (relative to the
     /// root box's centre), the normal is their covariance's smallest eigenvector, and the interval
-    /// is taken over the node's points. O(N log N), in parallel over nodes.
+    /// is taken over the node's points. O(N log N) time, O(height) moments alive at once, in
+    /// parallel over subtrees.
     void compute_slabs();
+    /// The first and second moments of a node's points about the root box's centre.
+    struct Moments {
+        Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+        Eigen::Matrix3d squares = Eigen::Matrix3d::Zero();
+    };
+    /// Sets the slabs of the subtree of node i (post-order: a node's moments are its children's sum,
+    /// so only those along the path are alive) and returns node i's moments; halves of more than
+    /// parallel_points points in parallel, down to `depth` levels.
+    Moments slab_subtree(Index i, const Eigen::Vector3d& origin, int depth);
 
     /// The sphere of every node: centred at the centroid of its points or at its box centre,
     /// whichever gives the smaller ball holding them. O(N log N), in parallel over nodes.

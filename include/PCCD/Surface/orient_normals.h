@@ -145,12 +145,9 @@ void propagate_signs(const Graph& g, const Eigen::MatrixBase<Positions>& positio
     const std::vector<char>& has_hint = state.has_hint;
     const std::vector<char>& has_normal = state.has_normal;
     const Eigen::Vector3d& centroid = state.centroid;
-    // Unit normals for the weights and the signs as they stand after the hints; the signs of points
-    // without a hint are set relative to these.
-    Eigen::Matrix3Xd unit(3, Eigen::Index(n));
-    for (std::size_t i = 0; i < n; ++i)
-        unit.col(Eigen::Index(i)) = has_normal[i] ? Eigen::Vector3d(normals.col(Eigen::Index(i)).normalized())
-                                                  : Eigen::Vector3d::Zero();
+    // Unit normals for the weights, normalized where they are read (no copy of the N normals: the
+    // weight ignores their signs, and a normal's sign changes only by an exact negation).
+    const auto unit = [&](std::uint32_t v) -> Eigen::Vector3d { return normals.col(Eigen::Index(v)).normalized(); };
     const auto followed = [&](const auto& e, std::uint32_t from) -> std::uint32_t {
         if (get(is_virtual, e)) return from;
         return static_cast<std::uint32_t>(target(e, g));
@@ -173,7 +170,7 @@ void propagate_signs(const Graph& g, const Eigen::MatrixBase<Positions>& positio
         for (auto [e, e_end] = out_edges(v, g); e != e_end; ++e) {
             const std::uint32_t w = followed(*e, v);
             if (w == v || in_tree[w] || !has_normal[w]) continue;
-            heap.emplace(orientation_edge_weight(unit.col(v), unit.col(w), edge(v, w)), w, v);
+            heap.emplace(orientation_edge_weight(unit(v), unit(w), edge(v, w)), w, v);
         }
     };
     for (std::size_t root = 0; root < n; ++root) {
@@ -236,11 +233,23 @@ Orientation_report orient_normals_over_graph(const char* caller, const Graph& g,
         throw Invalid_input(internal::concat(caller, ": ", hints->cols(), " hints for ", n,
                                              " points (need one per point, or none)"));
     Orientation_report report;
-    const Eigen::Matrix3Xd original = normals;
+    // Of each given nonzero normal, the sign of its largest coordinate, + or - (axis + 1): every later
+    // change of a nonzero normal is an exact negation, so it ends up flipped (opposite to the given
+    // one) iff that coordinate changed sign. (One byte a point instead of a copy of the normals.)
+    std::vector<std::int8_t> original(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto column = normals.col(Eigen::Index(i));
+        Eigen::Index axis = 0;
+        column.cwiseAbs().maxCoeff(&axis);
+        if (column(axis) != 0.0) original[i] = std::int8_t((axis + 1) * (column(axis) > 0.0 ? 1 : -1));
+    }
     const Hinted_normals state = apply_hints(caller, positions, normals, hints, report);
     propagate_signs(g, positions, normals, state, is_virtual, report);
-    for (std::size_t i = 0; i < n; ++i)
-        if (normals.col(Eigen::Index(i)).dot(original.col(Eigen::Index(i))) < 0.0) ++report.flipped;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (original[i] == 0) continue;
+        const double now = normals(std::abs(original[i]) - 1, Eigen::Index(i));
+        if (original[i] > 0 ? now < 0.0 : now > 0.0) ++report.flipped;
+    }
     return report;
 }
 

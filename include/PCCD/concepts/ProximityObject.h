@@ -16,7 +16,8 @@ namespace PCCD {
 /// A CollisionObject whose oriented point normals can be read: for `const O& o`,
 /// `o.normals()` is a 3 x N `Eigen::Matrix3Xd` (column i the unit normal of point i, pointing out
 /// of the object; a zero column for a point without a normal), held by the object.
-/// Models: PCCD::Point_cloud_object<K> and PCCD::Deforming_point_cloud_object<K> for every kernel K.
+/// Models: PCCD::Point_cloud_object<K>, PCCD::Deforming_point_cloud_object<K> and
+/// PCCD::Euclidean_point_cloud_object<K> for every kernel K.
 template <class O>
 concept ProximityObject = CollisionObject<O> && requires(const O& o) {
     { o.normals() } -> std::convertible_to<const Eigen::Matrix3Xd&>;

@@ -18,6 +18,7 @@
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
+#include <PCCD/Euclidean_point_cloud_object.h>
 #include <PCCD/Similarity_3.h>
 #include <PCCD/testing/pose_generator.h>
 #include <PCCD/sample_triangle_mesh.h>
@@ -87,6 +88,8 @@ struct Scan_model {
 /// One cloud of a model under a condition, preprocessed.
 struct Scan_cloud {
     std::unique_ptr<PCCD::Point_cloud_object<>> object;
+    /// The lean object (Euclidean kernel) of the same points, when asked for.
+    std::unique_ptr<PCCD::Euclidean_point_cloud_object<>> lean;
     /// The points as drawn (outliers included): what the naive test sees.
     std::unique_ptr<PCCD::Point_cloud<>> raw;
     double spacing = 0.0; // mean spacing of the raw cloud
@@ -131,7 +134,7 @@ inline Scan_model load_scan_model(const std::string& dir, const std::string& fil
 /// The cloud of `model` under `condition` (seed `seed`; the clean condition with the model's seed
 /// gives the model's clean cloud).
 inline Scan_cloud make_scan_cloud(const Scan_model& model, const Scan_condition& condition, std::uint64_t seed,
-                                  const PCCD::Point_cloud_object_options& options = {})
+                                  const PCCD::Point_cloud_object_options& options = {}, bool lean = false)
 {
     PCCD::Random_engine engine(seed);
     const std::size_t n = std::max<std::size_t>(16, std::size_t(std::llround(condition.density * double(model.clean_points))));
@@ -152,6 +155,7 @@ inline Scan_cloud make_scan_cloud(const Scan_model& model, const Scan_condition&
     const auto start = Clock::now();
     c.object = std::make_unique<PCCD::Point_cloud_object<>>(points, PCCD::Identity_point_map<Eigen::Vector3d>(), options);
     c.preprocessing_ms = ms_since(start);
+    if (lean) c.lean = std::make_unique<PCCD::Euclidean_point_cloud_object<>>(points, options);
     c.raw = std::make_unique<PCCD::Point_cloud<>>(points);
     c.spacing = c.raw->mean_spacing();
     return c;
@@ -226,6 +230,11 @@ struct Scan_row {
     std::size_t points = 0;
     Error_tally isearch, rst, naive;
     double isearch_mean_us = 0.0, rst_mean_us = 0.0;
+    /// With a lean object: its interpolation search, and the poses (grazing ones included) where its
+    /// verdict differs from the default object's (with the same seed).
+    Error_tally lean;
+    std::size_t lean_differs = 0;
+    double lean_mean_us = 0.0;
 };
 
 /// Runs both policies and the naive test on every pose of `truth`; prints each wrong non-grazing
@@ -252,18 +261,28 @@ inline Scan_row evaluate_first_hits(const Scan_model& model, const Scan_conditio
         const bool naive = naive_point_test(*cloud.raw, t.pose.pose_a, *cloud.raw, t.pose.pose_b, cloud.spacing);
         row.isearch.add(t.cls, is.intersects);
         row.rst.add(t.cls, rst.intersects);
+        bool lean_answer = is.intersects;
+        if (cloud.lean) {
+            start = Clock::now();
+            lean_answer = PCCD::do_intersect(*cloud.lean, t.pose.pose_a, *cloud.lean, t.pose.pose_b, options).intersects;
+            row.lean_mean_us += us_since(start);
+            row.lean.add(t.cls, lean_answer);
+            row.lean_differs += lean_answer != is.intersects;
+        }
         row.naive.add(t.cls, naive);
         if (verbose && t.cls != PCCD::Pose_class::grazing) {
             const bool truth_answer = t.cls == PCCD::Pose_class::intersecting;
-            if (is.intersects != truth_answer || rst.intersects != truth_answer || naive != truth_answer)
-                std::printf("    %s / %s: d = %.2f rot %zu exact %+.3f r: isearch %d rst %d naive %d\n", model.name.c_str(),
-                            condition.name.c_str(), t.pose.distance, t.pose.rotation_index,
+            if (is.intersects != truth_answer || rst.intersects != truth_answer || naive != truth_answer ||
+                lean_answer != truth_answer)
+                std::printf("    %s / %s: d = %.2f rot %zu exact %+.3f r: isearch %d rst %d naive %d lean %d\n",
+                            model.name.c_str(), condition.name.c_str(), t.pose.distance, t.pose.rotation_index,
                             t.separation.signed_measure() / model.clean_r, int(is.intersects), int(rst.intersects),
-                            int(naive));
+                            int(naive), int(lean_answer));
         }
     }
     row.isearch_mean_us = t_is / double(std::max<std::size_t>(1, truth.size()));
     row.rst_mean_us = t_rst / double(std::max<std::size_t>(1, truth.size()));
+    row.lean_mean_us /= double(std::max<std::size_t>(1, truth.size()));
     return row;
 }
 
@@ -271,7 +290,7 @@ inline Scan_row evaluate_first_hits(const Scan_model& model, const Scan_conditio
 inline void add_to(Scan_row& sum, const Scan_row& part)
 {
     for (auto [s, p] : {std::pair{&sum.isearch, &part.isearch}, std::pair{&sum.rst, &part.rst},
-                        std::pair{&sum.naive, &part.naive}}) {
+                        std::pair{&sum.naive, &part.naive}, std::pair{&sum.lean, &part.lean}}) {
         s->intersecting += p->intersecting;
         s->separated += p->separated;
         s->grazing += p->grazing;
@@ -280,6 +299,7 @@ inline void add_to(Scan_row& sum, const Scan_row& part)
         s->grazing_reported += p->grazing_reported;
     }
     sum.points += part.points;
+    sum.lean_differs += part.lean_differs;
 }
 
 /// One truth for both queries: on every pose of `truth` (grazing ones included), with the seeds of
@@ -348,6 +368,11 @@ inline void print_scan_row(const Scan_row& r)
                 cell(r.rst.false_negatives, r.rst.intersecting).c_str(), cell(r.rst.false_positives, r.rst.separated).c_str(),
                 cell(r.naive.false_negatives, r.naive.intersecting).c_str(),
                 cell(r.naive.false_positives, r.naive.separated).c_str(), r.isearch_mean_us, r.rst_mean_us);
+    const std::size_t poses = r.lean.intersecting + r.lean.separated + r.lean.grazing;
+    if (poses > 0)
+        std::printf("%-14s %-24s %7s | lean (Euclidean) FN %-15s FP %-15s | verdicts differing from the default %zu/%zu | %9.1f us\n",
+                    "", "", "", cell(r.lean.false_negatives, r.lean.intersecting).c_str(),
+                    cell(r.lean.false_positives, r.lean.separated).c_str(), r.lean_differs, poses, r.lean_mean_us);
 }
 
 inline double point_segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b)

@@ -166,49 +166,49 @@ inline void Point_cloud_hierarchy::finish()
 
 inline void Point_cloud_hierarchy::compute_slabs()
 {
-    const Eigen::Vector3d origin = m_nodes.front().box.center();
-    struct Moments {
-        Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-        Eigen::Matrix3d squares = Eigen::Matrix3d::Zero();
-    };
-    std::vector<Moments> moments(m_nodes.size());
-    for (std::size_t i = m_nodes.size(); i-- > 0;) {
-        const Node& node = m_nodes[i];
-        Moments& m = moments[i];
-        if (node.is_leaf()) {
-            for (Index k = node.first; k < node.first + node.count; ++k) {
-                const Eigen::Vector3d p = m_ordered.col(k).head<3>() - origin;
-                m.sum += p;
-                m.squares += p * p.transpose();
-            }
+    slab_subtree(0, m_nodes.front().box.center(), parallel_depth);
+}
+
+inline Point_cloud_hierarchy::Moments Point_cloud_hierarchy::slab_subtree(Index i, const Eigen::Vector3d& origin, int depth)
+{
+    Node& node = m_nodes[i];
+    Moments m;
+    if (node.is_leaf()) {
+        for (Index k = node.first; k < node.first + node.count; ++k) {
+            const Eigen::Vector3d p = m_ordered.col(k).head<3>() - origin;
+            m.sum += p;
+            m.squares += p * p.transpose();
+        }
+    } else {
+        Moments a, b;
+        const auto left_half = [&] { a = slab_subtree(left(i), origin, depth - 1); };
+        const auto right_half = [&] { b = slab_subtree(node.right, origin, depth - 1); };
+        if (depth > 0 && node.count > parallel_points) {
+            internal::parallel_invoke(left_half, right_half);
         } else {
-            const Moments& a = moments[left(Index(i))];
-            const Moments& b = moments[node.right];
-            m.sum = a.sum + b.sum;
-            m.squares = a.squares + b.squares;
+            left_half();
+            right_half();
         }
+        m.sum = a.sum + b.sum;
+        m.squares = a.squares + b.squares;
     }
-    internal::parallel_for_ranges(m_nodes.size(), 256, [&](std::size_t begin, std::size_t end) {
-        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
-        for (std::size_t i = begin; i < end; ++i) {
-            Node& node = m_nodes[i];
-            const Eigen::Vector3d mean = moments[i].sum / double(node.count);
-            const Eigen::Matrix3d covariance = moments[i].squares / double(node.count) - mean * mean.transpose();
-            solver.computeDirect(covariance);
-            Eigen::Vector3d normal = solver.eigenvectors().col(0);
-            if (solver.info() != Eigen::Success || !internal::all_finite(normal) || !(normal.norm() > 0.5)) continue;
-            normal.normalize();
-            double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-            for (Index k = node.first; k < node.first + node.count; ++k) {
-                const double d = normal.dot(m_ordered.col(k).head<3>());
-                lo = std::min(lo, d);
-                hi = std::max(hi, d);
-            }
-            node.slab_normal = normal;
-            node.slab_min = lo;
-            node.slab_max = hi;
-        }
-    });
+    const Eigen::Vector3d mean = m.sum / double(node.count);
+    const Eigen::Matrix3d covariance = m.squares / double(node.count) - mean * mean.transpose();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+    solver.computeDirect(covariance);
+    Eigen::Vector3d normal = solver.eigenvectors().col(0);
+    if (solver.info() != Eigen::Success || !internal::all_finite(normal) || !(normal.norm() > 0.5)) return m;
+    normal.normalize();
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (Index k = node.first; k < node.first + node.count; ++k) {
+        const double d = normal.dot(m_ordered.col(k).head<3>());
+        lo = std::min(lo, d);
+        hi = std::max(hi, d);
+    }
+    node.slab_normal = normal;
+    node.slab_min = lo;
+    node.slab_max = hi;
+    return m;
 }
 
 inline void Point_cloud_hierarchy::compute_spheres()
