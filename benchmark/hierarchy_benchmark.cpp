@@ -6,7 +6,7 @@
 //   hierarchy_benchmark [--models bunny00.off,elephant.off,eight.off] [--points 30000]
 //                       [--rotations 50] [--repetitions 3] [--seed 1]
 //                       [--traversals flat,depth_first,likelihood] [--volumes box_and_slab,box,sphere]
-//                       [--kernels geodesic,euclidean] [--csv OUT]
+//                       [--kernels geodesic,euclidean] [--probes DRAWS,STEPS] [--csv OUT]
 //                       [--budgets 5,10,20,50,100 --budget-csv OUT]
 //
 // Peak memory (getrusage) is printed after each model's preprocessing. Per model: the mesh is normalized into [-1, 1]^3, FCL's OBBRSS hierarchy is built on it, and a
@@ -17,7 +17,8 @@
 // median per distance, mean over d in [0, 3] and over the near misses d in [1, 2.25], their ratio to
 // FCL's, p99, and how often each traversal's verdict differs from the flat traversal's and from FCL's.
 // --kernels euclidean adds (or, alone, runs only) the lean object's likelihood walk ("euclidean"),
-// with its own preprocessing time and peak.
+// with its own preprocessing time and peak. --probes sets the interpolation search's probes (probe_draws,
+// probe_steps; 0,0: none) of every PCCD method.
 #include "collision_baselines.h"
 
 #include <PCCD/testing/csv.h>
@@ -62,7 +63,19 @@ struct Arguments {
     std::string csv;
     std::vector<double> budgets; // time budgets in us for the budget sweep (empty: none)
     std::string budget_csv;
+    /// The interpolation search's probes (Interpolation_search::probe_draws, probe_steps); unset: the defaults.
+    std::optional<std::size_t> probe_draws;
+    std::optional<std::size_t> probe_steps;
 };
+
+/// The leaf intersector of every PCCD method: the default one, with the probes of --probes.
+PCCD::Interpolation_search policy_of(const Arguments& args)
+{
+    PCCD::Interpolation_search policy;
+    if (args.probe_draws) policy.probe_draws = *args.probe_draws;
+    if (args.probe_steps) policy.probe_steps = *args.probe_steps;
+    return policy;
+}
 
 std::vector<std::string> split(const std::string& text)
 {
@@ -88,6 +101,12 @@ Arguments parse(int argc, char** argv)
         else if (key == "--traversals") a.traversals = value == "none" ? std::vector<std::string>{} : split(value);
         else if (key == "--volumes") a.volumes = split(value);
         else if (key == "--kernels") a.kernels = split(value);
+        else if (key == "--probes") {
+            const std::vector<std::string> v = split(value);
+            if (v.size() != 2) throw std::invalid_argument("--probes takes DRAWS,STEPS");
+            a.probe_draws = std::stoul(v[0]);
+            a.probe_steps = std::stoul(v[1]);
+        }
         else if (key == "--csv") a.csv = value;
         else if (key == "--budgets") {
             for (const auto& item : split(value)) a.budgets.push_back(std::stod(item));
@@ -255,6 +274,7 @@ void run_model(const std::string& name, const Arguments& args, std::ofstream* cs
         }
     if (lean) methods.push_back("euclidean");
     std::map<std::string, Series> series;
+    const PCCD::Interpolation_search policy = policy_of(args);
     for (const auto& pose : poses) {
         const auto [fcl_hit, fcl_us] = timed(args.repetitions, [&] { return fcl.collide(pose.pose_a, pose.pose_b); });
         bool flat_hit = fcl_hit;
@@ -278,7 +298,7 @@ void run_model(const std::string& name, const Arguments& args, std::ofstream* cs
             if (m == "euclidean") {
                 const PCCD::Intersection_options options{.seed = args.seed, .traversal = PCCD::Traversal::likelihood};
                 const auto [result, us] = timed(args.repetitions, [&] {
-                    return PCCD::do_intersect(*lean, pose.pose_a, *lean, pose.pose_b, options);
+                    return PCCD::do_intersect(*lean, pose.pose_a, *lean, pose.pose_b, options, policy);
                 });
                 record(m, result.intersects, us, double(result.counters.f_evaluations), result.counters.node_pairs,
                        result.counters.leaf_pairs);
@@ -288,7 +308,7 @@ void run_model(const std::string& name, const Arguments& args, std::ofstream* cs
             const PCCD::Point_cloud_object<>& o = slash == std::string::npos ? *geodesic : with_volume.at(m.substr(slash + 1));
             const PCCD::Intersection_options options{.seed = args.seed, .traversal = traversal_of(m.substr(0, slash))};
             const auto [result, us] = timed(args.repetitions, [&] {
-                return PCCD::do_intersect(o, pose.pose_a, o, pose.pose_b, options);
+                return PCCD::do_intersect(o, pose.pose_a, o, pose.pose_b, options, policy);
             });
             if (m == "flat") flat_hit = result.intersects;
             record(m, result.intersects, us, double(result.counters.f_evaluations), result.counters.node_pairs,

@@ -300,10 +300,7 @@ void register_clearance(CLI::App& app)
     cmd->add_option("--max-node-pairs", o->max_node_pairs,
                     "Budget per pose on the node pairs of the closest-pair walk (deterministic; default 0: none)");
     cmd->add_flag("--penetration", o->penetration, "For intersecting poses, also measure the penetration depth (depth)");
-    cmd->add_option("--kernel", o->kernel,
-                    "The objects' surface kernel: geodesic (Point_cloud_object), euclidean (the lean "
-                    "Euclidean_point_cloud_object, about a fifth of the memory) or auto (default: euclidean when a "
-                    "cloud has 10^6 points or more)")
+    cmd->add_option("--kernel", o->kernel, kernel_option_help())
         ->check(CLI::IsMember({"auto", "geodesic", "euclidean"}));
     cmd->add_option("--seed", o->seed, "Seed of the queries (default 24301 = 0x5eed; pose i gets pair_seed(seed, i))");
     cmd->add_option("--threads", o->threads, "Worker threads (default 0: all available); the answers do not depend on it");

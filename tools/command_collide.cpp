@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstdio>
@@ -49,14 +50,16 @@ struct Collide_options {
     double budget_us = 0.0;
     std::string volume = "box_and_slab";
     std::string png;
+    std::string kernel = "auto"; // auto, geodesic or euclidean
 };
 
 void print_summary(const nlohmann::ordered_json& r)
 {
     const auto object_line = [](const char* name, const nlohmann::ordered_json& o) {
-        std::printf("%s: %s, %zu points, r(P) %.5g, preprocessed in %.1f ms\n", name,
+        std::printf("%s: %s, %zu points, %s kernel, r(P) %.5g, preprocessed in %.1f ms\n", name,
                     o["file"].get<std::string>().c_str(), o["points"].get<std::size_t>(),
-                    o["sampling_radius"].get<double>(), o["preprocess_ms"].get<double>());
+                    o["kernel"].get<std::string>().c_str(), o["sampling_radius"].get<double>(),
+                    o["preprocess_ms"].get<double>());
     };
     object_line("A", r["a"]);
     if (r["same_object"].get<bool>())
@@ -79,18 +82,17 @@ void print_summary(const nlohmann::ordered_json& r)
     if (r.contains("first_point")) std::printf("first point: %s\n", r["first_point"].dump().c_str());
 }
 
-void run_collide(const Collide_options& o)
+/// The query (or the cases) on the points of A and B, each preprocessed into an `Object` (B is A
+/// when `same`), and its output.
+template <class Object>
+void run_collide_with(const Collide_options& o, const PCCD::Intersection_options& query_options,
+                      const Query_poses& poses, bool same, const Object_points& points_a,
+                      const std::optional<Object_points>& points_b)
 {
     const bool first_hit = o.mode == "first";
-    const PCCD::Intersection_options query_options = pccd_tool::query_options(o.seed, o.hierarchy, o.budget_us);
-    // Everything is read and checked before the (slow) preprocessing.
-    const auto [cases, pose_a, pose_b] = read_query_poses(o.cases, o.transform_a, o.transform_b, o.orthonormalize);
-    const bool same = same_file(o.file_a, o.file_b);
-    const Object_points points_a = read_object_points(o.file_a, o.normalize);
-    const std::optional<Object_points> points_b =
-        same ? std::nullopt : std::optional<Object_points>(read_object_points(o.file_b, o.normalize));
-    const Prepared_object a = prepare_object(points_a, o.file_a, o.volume);
-    const Prepared_object b = same ? a : prepare_object(*points_b, o.file_b, o.volume);
+    const auto& [cases, pose_a, pose_b] = poses;
+    const Prepared_object<Object> a = prepare_object<Object>(points_a, o.file_a, o.volume);
+    const Prepared_object<Object> b = same ? a : prepare_object<Object>(*points_b, o.file_b, o.volume);
     const double preprocess_ms = a.preprocess_ms + (same ? 0.0 : b.preprocess_ms);
 
     if (cases) {
@@ -159,6 +161,22 @@ void run_collide(const Collide_options& o)
     }
 }
 
+void run_collide(const Collide_options& o)
+{
+    const PCCD::Intersection_options query_options = pccd_tool::query_options(o.seed, o.hierarchy, o.budget_us);
+    // Everything is read and checked before the (slow) preprocessing.
+    const Query_poses poses = read_query_poses(o.cases, o.transform_a, o.transform_b, o.orthonormalize);
+    const bool same = same_file(o.file_a, o.file_b);
+    const Object_points points_a = read_object_points(o.file_a, o.normalize);
+    const std::optional<Object_points> points_b =
+        same ? std::nullopt : std::optional<Object_points>(read_object_points(o.file_b, o.normalize));
+    const std::size_t largest = std::max(points_a.points.size(), points_b ? points_b->points.size() : 0);
+    if (use_lean_kernel(o.kernel, largest))
+        run_collide_with<PCCD::Euclidean_point_cloud_object<>>(o, query_options, poses, same, points_a, points_b);
+    else
+        run_collide_with<PCCD::Point_cloud_object<>>(o, query_options, poses, same, points_a, points_b);
+}
+
 } // namespace
 
 void register_collide(CLI::App& app)
@@ -194,6 +212,8 @@ void register_collide(CLI::App& app)
     cmd->add_option("--volume", o->volume,
                     "Bounding volume of the hierarchies' node tests: box_and_slab (default), box or sphere")
         ->check(CLI::IsMember(volume_names()));
+    cmd->add_option("--kernel", o->kernel, kernel_option_help())
+        ->check(CLI::IsMember({"auto", "geodesic", "euclidean"}));
     auto* out = cmd->add_option("--out", o->out, "Write the intersection points to this file (.ply, .off, .xyz)");
     auto* json = cmd->add_flag("--json", o->json, "Print one JSON object instead of text");
     auto* png = cmd->add_option("--png", o->png,

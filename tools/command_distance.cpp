@@ -15,6 +15,7 @@
 #include "render_objects.h"
 #include "transform_options.h"
 
+#include <PCCD/Euclidean_point_cloud_object.h>
 #include <PCCD/Proximity/contacts.h>
 #include <PCCD/Proximity/distance.h>
 #include <PCCD/Rigid_transform_3.h>
@@ -55,6 +56,7 @@ struct Distance_cli_options {
     bool json = false;
     std::string png;
     std::string cases;
+    std::string kernel = "auto"; // auto, geodesic or euclidean
 };
 
 /// The number an option was given, checked: finite, and >= 0 (or > 0 when `positive`).
@@ -192,9 +194,10 @@ void print_summary(const nlohmann::ordered_json& r, const nlohmann::ordered_json
                    const std::vector<std::pair<std::string, double>>& raw_numbers)
 {
     const auto object_line = [](const char* name, const nlohmann::ordered_json& o) {
-        std::printf("%s: %s, %zu points, r(P) %.5g, preprocessed in %.1f ms\n", name,
+        std::printf("%s: %s, %zu points, %s kernel, r(P) %.5g, preprocessed in %.1f ms\n", name,
                     o["file"].get<std::string>().c_str(), o["points"].get<std::size_t>(),
-                    o["sampling_radius"].get<double>(), o["preprocess_ms"].get<double>());
+                    o["kernel"].get<std::string>().c_str(), o["sampling_radius"].get<double>(),
+                    o["preprocess_ms"].get<double>());
     };
     object_line("A", r["a"]);
     if (r["same_object"].get<bool>())
@@ -245,19 +248,16 @@ pccd_render::Marker_layer segment_layer(const Eigen::Vector3d& p, const Eigen::V
     return layer;
 }
 
-void run_distance(const Distance_cli_options& o)
+/// The query (or the cases) on the points of A and B, each preprocessed into an `Object` (B is A
+/// when `same`), and its output.
+template <class Object>
+void run_distance_with(const Distance_cli_options& o, const PCCD::Distance_options& options,
+                       const std::optional<double>& margin, const Query_poses& poses, bool same,
+                       const Object_points& points_a, const std::optional<Object_points>& points_b)
 {
-    // Everything is read and checked before the (slow) preprocessing.
-    const PCCD::Distance_options options = distance_options(o);
-    std::optional<double> margin;
-    if (!o.margin.empty()) margin = option_number(o.margin, "--margin", false);
-    const auto [cases, pose_a, pose_b] = read_query_poses(o.cases, o.transform_a, o.transform_b, o.orthonormalize);
-    const bool same = same_file(o.file_a, o.file_b);
-    const Object_points points_a = read_object_points(o.file_a, o.normalize);
-    const std::optional<Object_points> points_b =
-        same ? std::nullopt : std::optional<Object_points>(read_object_points(o.file_b, o.normalize));
-    const Prepared_object a = prepare_object(points_a, o.file_a);
-    const Prepared_object b = same ? a : prepare_object(*points_b, o.file_b);
+    const auto& [cases, pose_a, pose_b] = poses;
+    const Prepared_object<Object> a = prepare_object<Object>(points_a, o.file_a);
+    const Prepared_object<Object> b = same ? a : prepare_object<Object>(*points_b, o.file_b);
     const double preprocess_ms = a.preprocess_ms + (same ? 0.0 : b.preprocess_ms);
 
     if (cases) {
@@ -350,6 +350,24 @@ void run_distance(const Distance_cli_options& o)
     }
 }
 
+void run_distance(const Distance_cli_options& o)
+{
+    // Everything is read and checked before the (slow) preprocessing.
+    const PCCD::Distance_options options = distance_options(o);
+    std::optional<double> margin;
+    if (!o.margin.empty()) margin = option_number(o.margin, "--margin", false);
+    const Query_poses poses = read_query_poses(o.cases, o.transform_a, o.transform_b, o.orthonormalize);
+    const bool same = same_file(o.file_a, o.file_b);
+    const Object_points points_a = read_object_points(o.file_a, o.normalize);
+    const std::optional<Object_points> points_b =
+        same ? std::nullopt : std::optional<Object_points>(read_object_points(o.file_b, o.normalize));
+    const std::size_t largest = std::max(points_a.points.size(), points_b ? points_b->points.size() : 0);
+    if (use_lean_kernel(o.kernel, largest))
+        run_distance_with<PCCD::Euclidean_point_cloud_object<>>(o, options, margin, poses, same, points_a, points_b);
+    else
+        run_distance_with<PCCD::Point_cloud_object<>>(o, options, margin, poses, same, points_a, points_b);
+}
+
 } // namespace
 
 void register_distance(CLI::App& app)
@@ -392,6 +410,8 @@ void register_distance(CLI::App& app)
     cmd->add_option("--max-contacts", o->max_contacts, "With --contacts: the most regions returned (default 8)");
     margin->excludes(contacts);
     cmd->add_option("--seed", o->seed, "Seed of the query (default 24301 = 0x5eed)");
+    cmd->add_option("--kernel", o->kernel, kernel_option_help())
+        ->check(CLI::IsMember({"auto", "geodesic", "euclidean"}));
     auto* json = cmd->add_flag("--json", o->json,
                                "Print one JSON object, the result's fields named as in C++ (NaN and inf: null)");
     auto* png = cmd->add_option("--png", o->png,

@@ -140,6 +140,14 @@ inline bool use_lean_kernel(const std::string& kernel, std::size_t largest_cloud
     return largest_cloud >= lean_from_points;
 }
 
+/// The help text of `--kernel`, one for every command that takes it.
+inline const char* kernel_option_help()
+{
+    return "The objects' surface kernel: geodesic (Point_cloud_object), euclidean (the lean "
+           "Euclidean_point_cloud_object, about a fifth of the memory) or auto (default: euclidean when a "
+           "cloud has 10^6 points or more)";
+}
+
 /// A vector as a JSON array of three numbers; null when an entry is NaN or infinite (an answer
 /// that has no such point or direction).
 inline nlohmann::ordered_json vector_json(const Eigen::Vector3d& v)
@@ -175,9 +183,10 @@ struct Timed_result {
 };
 
 /// One query: do_intersect (first_hit) or intersection_points, with the policy named `method`.
-inline Timed_result run_timed_query(const PCCD::Point_cloud_object<>& a, const PCCD::Rigid_transform_3<double>& pose_a,
-                                    const PCCD::Point_cloud_object<>& b, const PCCD::Rigid_transform_3<double>& pose_b,
-                                    const PCCD::Intersection_options& options, const std::string& method, bool first_hit)
+template <class Object>
+Timed_result run_timed_query(const Object& a, const PCCD::Rigid_transform_3<double>& pose_a, const Object& b,
+                             const PCCD::Rigid_transform_3<double>& pose_b, const PCCD::Intersection_options& options,
+                             const std::string& method, bool first_hit)
 {
     const auto query = [&](const auto& policy) {
         const Clock::time_point start = Clock::now();

@@ -29,8 +29,9 @@ inline double splat_radius(const PCCD::Point_cloud<>& cloud)
 }
 
 /// The object's points and oriented normals under `pose`, in one colour.
-inline pccd_render::Cloud_layer cloud_layer(const PCCD::Point_cloud_object<>& object,
-                                            const PCCD::Rigid_transform_3<double>& pose, pccd_render::Rgb colour)
+template <class Object>
+pccd_render::Cloud_layer cloud_layer(const Object& object, const PCCD::Rigid_transform_3<double>& pose,
+                                     pccd_render::Rgb colour)
 {
     pccd_render::Cloud_layer layer;
     layer.points = pose.transform_points(object.cloud().coordinates());

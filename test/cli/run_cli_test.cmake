@@ -143,6 +143,27 @@ elseif(CASE STREQUAL "collide_volume")
   endforeach()
   pccd_run(OK ARGS info sphere.xyz --json MATCH "\"volume\": \"box_and_slab\"")
   pccd_run(FAIL ARGS collide sphere.xyz sphere.xyz --volume cube MATCH "--volume")
+elseif(CASE STREQUAL "kernel_option")
+  # --kernel on collide and distance: the lean object (euclidean) gives the same verdicts and the
+  # distance of surfaces 1 apart; auto picks the geodesic object below 10^6 points; a bad name is
+  # refused before any work.
+  pccd_run(OK ARGS collide sphere.xyz sphere.xyz --transform-b ${shift_1} --kernel euclidean --json
+           MATCH "\"intersects\": true" "\"status\": \"intersecting\"" "\"kernel\": \"euclidean\"")
+  pccd_run(OK ARGS collide sphere.xyz torus.ply --transform-b ${shift_3} --kernel euclidean --json
+           MATCH "\"intersects\": false" "\"status\": \"separate\"" "\"kernel\": \"euclidean\"")
+  pccd_run(OK ARGS collide sphere.xyz torus.ply --transform-b ${shift_1} --kernel auto
+           STDOUT_MATCH "A: sphere.xyz, 2000 points, geodesic kernel" "B: torus.ply, 2000 points, geodesic kernel"
+                        "answer: intersecting")
+  pccd_run(OK ARGS distance sphere.xyz torus.ply --transform-b ${shift_3} --kernel euclidean --json
+           MATCH "\"status\": \"separate\"" "\"kernel\": \"euclidean\"")
+  pccd_json_number(distance "${PCCD_STDOUT}" distance)
+  pccd_expect_between(${distance} 0.97 1.03 "the lean objects' distance of surfaces 1 apart")
+  pccd_run(OK ARGS distance sphere.xyz sphere.xyz --transform-b ${shift_1} --kernel euclidean --penetration
+           STDOUT_MATCH "A: sphere.xyz, 2000 points, euclidean kernel" "\nstatus: intersecting\n")
+  foreach(command collide distance)
+    pccd_run(FAIL ARGS ${command} sphere.xyz sphere.xyz --kernel lean
+             MATCH "--kernel: lean not in \\{auto,geodesic,euclidean\\}")
+  endforeach()
 elseif(CASE STREQUAL "collide_text")
   pccd_run(OK ARGS collide sphere.xyz torus.ply --transform-a ${identity} --transform-b ${shift_1}
            MATCH "A: sphere.xyz, 2000 points" "B: torus.ply, 2000 points" "answer: intersecting"
