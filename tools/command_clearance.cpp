@@ -180,15 +180,15 @@ void write_profile_png(const PCCD::Clearance_profile& p, const std::string& file
     pccd_render::write_png(file, pccd_render::plot_profile(plot, 800, 480));
 }
 
-/// The clearance of `points_object` along `poses` through `points_scene` (the same object when
-/// `same`), both preprocessed into an `Object`, and its output.
+/// The clearance of the object's points (`clouds.a`) along `poses` through the scene's (`clouds.b`;
+/// the same object when `clouds.same`), both preprocessed into an `Object`, and its output.
 template <class Object>
 void run_clearance_with(const Clearance_cli_options& o, double margin, const PCCD::Clearance_options& options,
-                        const std::vector<PCCD::Rigid_transform_3<double>>& poses, bool same,
-                        const Object_points& points_object, const std::optional<Object_points>& points_scene)
+                        const std::vector<PCCD::Rigid_transform_3<double>>& poses, const Two_clouds& clouds)
 {
-    const Prepared_object<Object> object = prepare_object<Object>(points_object, o.file_object);
-    const Prepared_object<Object> scene = same ? object : prepare_object<Object>(*points_scene, o.file_scene);
+    const bool same = clouds.same;
+    const Prepared_object<Object> object = prepare_object<Object>(clouds.a, o.file_object);
+    const Prepared_object<Object> scene = same ? object : prepare_object<Object>(*clouds.b, o.file_scene);
 
     const Clock::time_point start = Clock::now();
     const PCCD::Clearance_profile p = PCCD::clearance(object.object, scene.object, poses, margin, options);
@@ -261,15 +261,10 @@ void run_clearance(const Clearance_cli_options& o)
     const double margin = option_number(o.margin, "--margin", false);
     const PCCD::Clearance_options options = clearance_options(o, margin);
     const std::vector<PCCD::Rigid_transform_3<double>> poses = read_path(o.path, o.orthonormalize);
-    const bool same = same_file(o.file_object, o.file_scene);
-    const Object_points points_object = read_object_points(o.file_object, false);
-    const std::optional<Object_points> points_scene =
-        same ? std::nullopt : std::optional<Object_points>(read_object_points(o.file_scene, false));
-    const std::size_t largest = std::max(points_object.points.size(), points_scene ? points_scene->points.size() : 0);
-    if (use_lean_kernel(o.kernel, largest))
-        run_clearance_with<PCCD::Euclidean_point_cloud_object<>>(o, margin, options, poses, same, points_object, points_scene);
-    else
-        run_clearance_with<PCCD::Point_cloud_object<>>(o, margin, options, poses, same, points_object, points_scene);
+    const Two_clouds clouds = read_two_clouds(o.file_object, o.file_scene, false);
+    with_kernel(o.kernel, clouds, [&]<class Object>(std::type_identity<Object>) {
+        run_clearance_with<Object>(o, margin, options, poses, clouds);
+    });
 }
 
 } // namespace

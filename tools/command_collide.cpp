@@ -86,13 +86,13 @@ void print_summary(const nlohmann::ordered_json& r)
 /// when `same`), and its output.
 template <class Object>
 void run_collide_with(const Collide_options& o, const PCCD::Intersection_options& query_options,
-                      const Query_poses& poses, bool same, const Object_points& points_a,
-                      const std::optional<Object_points>& points_b)
+                      const Query_poses& poses, const Two_clouds& clouds)
 {
     const bool first_hit = o.mode == "first";
+    const bool same = clouds.same;
     const auto& [cases, pose_a, pose_b] = poses;
-    const Prepared_object<Object> a = prepare_object<Object>(points_a, o.file_a, o.volume);
-    const Prepared_object<Object> b = same ? a : prepare_object<Object>(*points_b, o.file_b, o.volume);
+    const Prepared_object<Object> a = prepare_object<Object>(clouds.a, o.file_a, o.volume);
+    const Prepared_object<Object> b = same ? a : prepare_object<Object>(*clouds.b, o.file_b, o.volume);
     const double preprocess_ms = a.preprocess_ms + (same ? 0.0 : b.preprocess_ms);
 
     if (cases) {
@@ -166,15 +166,10 @@ void run_collide(const Collide_options& o)
     const PCCD::Intersection_options query_options = pccd_tool::query_options(o.seed, o.hierarchy, o.budget_us);
     // Everything is read and checked before the (slow) preprocessing.
     const Query_poses poses = read_query_poses(o.cases, o.transform_a, o.transform_b, o.orthonormalize);
-    const bool same = same_file(o.file_a, o.file_b);
-    const Object_points points_a = read_object_points(o.file_a, o.normalize);
-    const std::optional<Object_points> points_b =
-        same ? std::nullopt : std::optional<Object_points>(read_object_points(o.file_b, o.normalize));
-    const std::size_t largest = std::max(points_a.points.size(), points_b ? points_b->points.size() : 0);
-    if (use_lean_kernel(o.kernel, largest))
-        run_collide_with<PCCD::Euclidean_point_cloud_object<>>(o, query_options, poses, same, points_a, points_b);
-    else
-        run_collide_with<PCCD::Point_cloud_object<>>(o, query_options, poses, same, points_a, points_b);
+    const Two_clouds clouds = read_two_clouds(o.file_a, o.file_b, o.normalize);
+    with_kernel(o.kernel, clouds, [&]<class Object>(std::type_identity<Object>) {
+        run_collide_with<Object>(o, query_options, poses, clouds);
+    });
 }
 
 } // namespace

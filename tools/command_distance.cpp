@@ -252,12 +252,12 @@ pccd_render::Marker_layer segment_layer(const Eigen::Vector3d& p, const Eigen::V
 /// when `same`), and its output.
 template <class Object>
 void run_distance_with(const Distance_cli_options& o, const PCCD::Distance_options& options,
-                       const std::optional<double>& margin, const Query_poses& poses, bool same,
-                       const Object_points& points_a, const std::optional<Object_points>& points_b)
+                       const std::optional<double>& margin, const Query_poses& poses, const Two_clouds& clouds)
 {
+    const bool same = clouds.same;
     const auto& [cases, pose_a, pose_b] = poses;
-    const Prepared_object<Object> a = prepare_object<Object>(points_a, o.file_a);
-    const Prepared_object<Object> b = same ? a : prepare_object<Object>(*points_b, o.file_b);
+    const Prepared_object<Object> a = prepare_object<Object>(clouds.a, o.file_a);
+    const Prepared_object<Object> b = same ? a : prepare_object<Object>(*clouds.b, o.file_b);
     const double preprocess_ms = a.preprocess_ms + (same ? 0.0 : b.preprocess_ms);
 
     if (cases) {
@@ -357,15 +357,10 @@ void run_distance(const Distance_cli_options& o)
     std::optional<double> margin;
     if (!o.margin.empty()) margin = option_number(o.margin, "--margin", false);
     const Query_poses poses = read_query_poses(o.cases, o.transform_a, o.transform_b, o.orthonormalize);
-    const bool same = same_file(o.file_a, o.file_b);
-    const Object_points points_a = read_object_points(o.file_a, o.normalize);
-    const std::optional<Object_points> points_b =
-        same ? std::nullopt : std::optional<Object_points>(read_object_points(o.file_b, o.normalize));
-    const std::size_t largest = std::max(points_a.points.size(), points_b ? points_b->points.size() : 0);
-    if (use_lean_kernel(o.kernel, largest))
-        run_distance_with<PCCD::Euclidean_point_cloud_object<>>(o, options, margin, poses, same, points_a, points_b);
-    else
-        run_distance_with<PCCD::Point_cloud_object<>>(o, options, margin, poses, same, points_a, points_b);
+    const Two_clouds clouds = read_two_clouds(o.file_a, o.file_b, o.normalize);
+    with_kernel(o.kernel, clouds, [&]<class Object>(std::type_identity<Object>) {
+        run_distance_with<Object>(o, options, margin, poses, clouds);
+    });
 }
 
 } // namespace

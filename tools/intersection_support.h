@@ -18,11 +18,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace pccd_tool {
@@ -138,6 +140,38 @@ inline bool use_lean_kernel(const std::string& kernel, std::size_t largest_cloud
     if (kernel == "euclidean") return true;
     if (kernel == "geodesic") return false;
     return largest_cloud >= lean_from_points;
+}
+
+/// The two point files of a query command, each read once: `b` is empty when both name the same
+/// file (`same`), which the command then preprocesses once.
+struct Two_clouds {
+    bool same = false;
+    Object_points a;
+    std::optional<Object_points> b;
+
+    /// The larger cloud's number of points (what `--kernel auto` decides by).
+    std::size_t largest() const { return std::max(a.points.size(), b ? b->points.size() : std::size_t(0)); }
+};
+
+inline Two_clouds read_two_clouds(const std::string& file_a, const std::string& file_b, bool normalize)
+{
+    Two_clouds clouds;
+    clouds.same = same_file(file_a, file_b);
+    clouds.a = read_object_points(file_a, normalize);
+    if (!clouds.same) clouds.b = read_object_points(file_b, normalize);
+    return clouds;
+}
+
+/// Calls `run` with a tag of the object type `--kernel` chooses for `clouds`:
+/// `run(std::type_identity<PCCD::Euclidean_point_cloud_object<>>{})` or the same with
+/// `PCCD::Point_cloud_object<>`.
+template <class Run>
+void with_kernel(const std::string& kernel, const Two_clouds& clouds, Run&& run)
+{
+    if (use_lean_kernel(kernel, clouds.largest()))
+        run(std::type_identity<PCCD::Euclidean_point_cloud_object<>>{});
+    else
+        run(std::type_identity<PCCD::Point_cloud_object<>>{});
 }
 
 /// The help text of `--kernel`, one for every command that takes it.
