@@ -366,6 +366,7 @@ void run(const Arguments& args)
     std::printf("%-6s %8s %8s %8s %10s %10s %12s %10s\n", "method", "median", "p99", "max", "within0.5", "signed_med",
                 "beyond_cap", "undecided");
     for (int m = 0; m < method_count; ++m) {
+        if (m == kd && args.skip_kd) continue; // not run (--kd capped)
         std::vector<double> error, signed_error;
         std::size_t beyond = 0, undecided = 0, within = 0;
         for (const auto& r : results) {
@@ -388,6 +389,7 @@ void run(const Arguments& args)
     for (const auto& r : results) exact_below += r.exact < args.margin ? 1 : 0;
     std::printf("below the margin %.3f m: exact %zu of %zu poses\n", args.margin, exact_below, results.size());
     for (int m = 0; m < method_count; ++m) {
+        if (m == kd && args.skip_kd) continue; // not run (--kd capped)
         std::size_t agree = 0, false_alarm = 0, missed = 0;
         for (const auto& r : results) {
             const double v = r.value[std::size_t(m)];
