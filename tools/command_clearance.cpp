@@ -262,7 +262,7 @@ void run_clearance(const Clearance_cli_options& o)
     const PCCD::Clearance_options options = clearance_options(o, margin);
     const std::vector<PCCD::Rigid_transform_3<double>> poses = read_path(o.path, o.orthonormalize);
     const Two_clouds clouds = read_two_clouds(o.file_object, o.file_scene, false);
-    with_kernel(o.kernel, clouds, [&]<class Object>(std::type_identity<Object>) {
+    with_kernel(o.kernel, clouds.largest(), [&]<class Object>(std::type_identity<Object>) {
         run_clearance_with<Object>(o, margin, options, poses, clouds);
     });
 }

@@ -167,7 +167,7 @@ void run_collide(const Collide_options& o)
     // Everything is read and checked before the (slow) preprocessing.
     const Query_poses poses = read_query_poses(o.cases, o.transform_a, o.transform_b, o.orthonormalize);
     const Two_clouds clouds = read_two_clouds(o.file_a, o.file_b, o.normalize);
-    with_kernel(o.kernel, clouds, [&]<class Object>(std::type_identity<Object>) {
+    with_kernel(o.kernel, clouds.largest(), [&]<class Object>(std::type_identity<Object>) {
         run_collide_with<Object>(o, query_options, poses, clouds);
     });
 }

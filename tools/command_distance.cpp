@@ -358,7 +358,7 @@ void run_distance(const Distance_cli_options& o)
     if (!o.margin.empty()) margin = option_number(o.margin, "--margin", false);
     const Query_poses poses = read_query_poses(o.cases, o.transform_a, o.transform_b, o.orthonormalize);
     const Two_clouds clouds = read_two_clouds(o.file_a, o.file_b, o.normalize);
-    with_kernel(o.kernel, clouds, [&]<class Object>(std::type_identity<Object>) {
+    with_kernel(o.kernel, clouds.largest(), [&]<class Object>(std::type_identity<Object>) {
         run_distance_with<Object>(o, options, margin, poses, clouds);
     });
 }

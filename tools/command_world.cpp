@@ -1,5 +1,5 @@
 // pccd world [SCENE.csv] [--generate FILE:COUNT ...] [--side L] [--scene-seed S] [--write-scene OUT.csv]
-//   [--normalize] [--seed S] [--hierarchy H] [--budget-us B] [--threads N] [--json] [--png F.png]
+//   [--normalize] [--seed S] [--hierarchy H] [--budget-us B] [--threads N] [--kernel K] [--json] [--png F.png]
 //   [--size WxH] [--view V]:
 // builds a Collision_world from a scene -- rows "file, 12 numbers of the 3x4 pose [R | t] row by
 // row[, group, mask]" of a CSV file, or COUNT copies of each FILE at seeded random poses -- and
@@ -18,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -32,6 +33,7 @@
 #include <set>
 #include <string>
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
 namespace pccd_tool {
@@ -52,6 +54,7 @@ struct World_command_options {
     std::string png;
     std::string size = "1200x800";
     std::string view = "30,25";
+    std::string kernel = "auto"; // auto, geodesic or euclidean
 };
 
 /// One row of the scene: the file, its pose and its collision filter; for a generated row also the
@@ -164,134 +167,142 @@ void run_world(const World_command_options& o)
     for (const auto& [file, count] : specs) add_file(file);
     std::vector<Object_points> points; // every file read before any is preprocessed
     for (const std::string& file : files) points.push_back(read_object_points(file, o.normalize));
-    std::vector<std::shared_ptr<const PCCD::Point_cloud_object<>>> objects;
-    std::vector<double> preprocess_ms;
-    for (std::size_t i = 0; i < files.size(); ++i) {
-        Prepared_object prepared = prepare_object(points[i], files[i]);
-        objects.push_back(std::make_shared<const PCCD::Point_cloud_object<>>(std::move(prepared.object)));
-        preprocess_ms.push_back(prepared.preprocess_ms);
-    }
-
-    // Generated poses: uniform rotations, translations uniform in [0, side]^3; the automatic side
-    // gives each instance a cube 0.9 times the mean box diagonal wide, so that the scene has
-    // contacts without being a heap.
-    if (!specs.empty()) {
-        std::size_t total = 0;
-        double diagonal = 0.0;
-        for (const auto& [file, count] : specs) {
-            total += count;
-            diagonal += double(count) * objects[file_index[file]]->hierarchy().node(0).box.diagonal().norm();
+    // The objects, the world and the output, for the object type --kernel chooses (by the largest file).
+    std::size_t largest = 0;
+    for (const Object_points& p : points) largest = std::max(largest, p.points.size());
+    const auto run = [&]<class Object>(std::type_identity<Object>) {
+        std::vector<std::shared_ptr<const Object>> objects;
+        std::vector<double> preprocess_ms;
+        for (std::size_t i = 0; i < files.size(); ++i) {
+            Prepared_object<Object> prepared = prepare_object<Object>(points[i], files[i]);
+            objects.push_back(std::make_shared<const Object>(std::move(prepared.object)));
+            preprocess_ms.push_back(prepared.preprocess_ms);
         }
-        const double side = o.side > 0.0 ? o.side : 0.9 * (diagonal / double(total)) * std::cbrt(double(total));
-        PCCD::Random_engine engine(o.scene_seed);
-        for (const auto& [file, count] : specs)
-            for (std::size_t i = 0; i < count; ++i) {
-                const Eigen::Matrix3d r = PCCD::testing::uniform_random_rotation(engine);
-                const Eigen::Vector3d t(PCCD::uniform_real(engine, 0, side), PCCD::uniform_real(engine, 0, side),
-                                        PCCD::uniform_real(engine, 0, side));
-                std::array<double, 12> m;
-                for (int row = 0; row < 3; ++row)
-                    for (int col = 0; col < 4; ++col) m[std::size_t(4 * row + col)] = col < 3 ? r(row, col) : t(row);
-                rows.push_back({file, PCCD::Rigid_transform_3<double>(m), {}, m});
+
+        // Generated poses: uniform rotations, translations uniform in [0, side]^3; the automatic side
+        // gives each instance a cube 0.9 times the mean box diagonal wide, so that the scene has
+        // contacts without being a heap.
+        if (!specs.empty()) {
+            std::size_t total = 0;
+            double diagonal = 0.0;
+            for (const auto& [file, count] : specs) {
+                total += count;
+                diagonal += double(count) * objects[file_index[file]]->hierarchy().node(0).box.diagonal().norm();
             }
-        if (!o.write_scene.empty()) {
-            std::ofstream out(o.write_scene);
-            if (!out) throw PCCD::File_error(o.write_scene, "cannot write the scene file");
-            out << "# pccd world --generate, scene seed " << o.scene_seed << ", side "
-                << PCCD::Rigid_transform_3<double>::full_digits(side) << "\nfile,r00,r01,r02,t0,r10,r11,r12,t1,r20,r21,r22,t2\n";
-            for (const Scene_row& row : rows) out << row.file << pose_text(row.given) << '\n';
-            if (!out) throw PCCD::File_error(o.write_scene, "cannot write the scene file");
+            const double side = o.side > 0.0 ? o.side : 0.9 * (diagonal / double(total)) * std::cbrt(double(total));
+            PCCD::Random_engine engine(o.scene_seed);
+            for (const auto& [file, count] : specs)
+                for (std::size_t i = 0; i < count; ++i) {
+                    const Eigen::Matrix3d r = PCCD::testing::uniform_random_rotation(engine);
+                    const Eigen::Vector3d t(PCCD::uniform_real(engine, 0, side), PCCD::uniform_real(engine, 0, side),
+                                            PCCD::uniform_real(engine, 0, side));
+                    std::array<double, 12> m;
+                    for (int row = 0; row < 3; ++row)
+                        for (int col = 0; col < 4; ++col) m[std::size_t(4 * row + col)] = col < 3 ? r(row, col) : t(row);
+                    rows.push_back({file, PCCD::Rigid_transform_3<double>(m), {}, m});
+                }
+            if (!o.write_scene.empty()) {
+                std::ofstream out(o.write_scene);
+                if (!out) throw PCCD::File_error(o.write_scene, "cannot write the scene file");
+                out << "# pccd world --generate, scene seed " << o.scene_seed << ", side "
+                    << PCCD::Rigid_transform_3<double>::full_digits(side) << "\nfile,r00,r01,r02,t0,r10,r11,r12,t1,r20,r21,r22,t2\n";
+                for (const Scene_row& row : rows) out << row.file << pose_text(row.given) << '\n';
+                if (!out) throw PCCD::File_error(o.write_scene, "cannot write the scene file");
+            }
         }
-    }
 
-    PCCD::Collision_world<PCCD::Point_cloud_object<>> world(world_options);
-    std::vector<std::size_t> object_of;
-    for (const Scene_row& row : rows) {
-        world.insert(objects[file_index[row.file]], row.pose, row.filter);
-        object_of.push_back(file_index[row.file]);
-    }
-    const Clock::time_point start = Clock::now();
-    const std::vector<PCCD::World_pair> pairs = world.intersecting_pairs();
-    const double query_ms = ms_since(start);
-    std::set<std::uint32_t> touching;
-    for (const PCCD::World_pair& p : pairs) {
-        touching.insert(p.a.index);
-        touching.insert(p.b.index);
-    }
-
-    nlohmann::ordered_json r;
-    r["objects"] = nlohmann::ordered_json::array();
-    for (std::size_t i = 0; i < files.size(); ++i)
-        r["objects"].push_back({{"file", files[i]},
-                                {"points", objects[i]->size()},
-                                {"sampling_radius", objects[i]->sampling_radius()},
-                                {"preprocess_ms", preprocess_ms[i]}});
-    r["instances"] = rows.size();
-    r["normalize"] = o.normalize;
-    r["seed"] = o.seed;
-    r["threads"] = o.threads ? nlohmann::ordered_json(o.threads) : nlohmann::ordered_json(nullptr);
-    r["pairs"] = nlohmann::ordered_json::array();
-    for (const PCCD::World_pair& p : pairs)
-        r["pairs"].push_back({{"a", p.a.index}, {"b", p.b.index}, {"status", PCCD::to_string(p.status)},
-                              {"point", vector_json(p.point)}});
-    r["touching_instances"] = touching.size();
-    const PCCD::World_counters& c = world.counters();
-    r["counters"] = {{"broad_phase_pairs", c.broad_phase_pairs},
-                     {"filtered_pairs", c.filtered_pairs},
-                     {"cached_pairs", c.cached_pairs},
-                     {"narrow_phase_queries", c.narrow_phase_queries},
-                     {"reported_pairs", c.reported_pairs}};
-    r["query_ms"] = query_ms;
-    r["memory_bytes"] = world.memory_bytes();
-    r["scene"] = o.write_scene.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(o.write_scene);
-    r["png"] = nullptr;
-
-    if (!o.png.empty()) {
-        constexpr pccd_render::Rgb touching_colour{215, 50, 40};
-        constexpr pccd_render::Rgb apart_colour{175, 175, 180};
-        pccd_render::Scene scene;
-        double smallest_splat = std::numeric_limits<double>::infinity();
-        for (std::size_t i = 0; i < rows.size(); ++i) {
-            scene.clouds.push_back(cloud_layer(*objects[object_of[i]], rows[i].pose,
-                                               touching.contains(std::uint32_t(i)) ? touching_colour : apart_colour));
-            smallest_splat = std::min(smallest_splat, scene.clouds.back().splat_radius);
+        PCCD::Collision_world<Object> world(world_options);
+        std::vector<std::size_t> object_of;
+        for (const Scene_row& row : rows) {
+            world.insert(objects[file_index[row.file]], row.pose, row.filter);
+            object_of.push_back(file_index[row.file]);
         }
-        pccd_render::Marker_layer markers;
-        markers.colour = {40, 20, 20};
-        markers.radius = 2.0 * smallest_splat;
-        markers.min_pixels = 3.0;
-        std::vector<Eigen::Vector3d> points;
+        const Clock::time_point start = Clock::now();
+        const std::vector<PCCD::World_pair> pairs = world.intersecting_pairs();
+        const double query_ms = ms_since(start);
+        std::set<std::uint32_t> touching;
+        for (const PCCD::World_pair& p : pairs) {
+            touching.insert(p.a.index);
+            touching.insert(p.b.index);
+        }
+
+        nlohmann::ordered_json r;
+        r["objects"] = nlohmann::ordered_json::array();
+        for (std::size_t i = 0; i < files.size(); ++i)
+            r["objects"].push_back({{"file", files[i]},
+                                    {"points", objects[i]->size()},
+                                    {"kernel", kernel_name<Object>()},
+                                    {"sampling_radius", objects[i]->sampling_radius()},
+                                    {"preprocess_ms", preprocess_ms[i]}});
+        r["instances"] = rows.size();
+        r["normalize"] = o.normalize;
+        r["seed"] = o.seed;
+        r["threads"] = o.threads ? nlohmann::ordered_json(o.threads) : nlohmann::ordered_json(nullptr);
+        r["pairs"] = nlohmann::ordered_json::array();
         for (const PCCD::World_pair& p : pairs)
-            if (p.point.allFinite()) points.push_back(p.point);
-        markers.points.resize(3, Eigen::Index(points.size()));
-        for (std::size_t i = 0; i < points.size(); ++i) markers.points.col(Eigen::Index(i)) = points[i];
-        scene.markers.push_back(std::move(markers));
-        render_to_png(scene, view, width, height, o.png);
-        r["png"] = std::filesystem::absolute(o.png).string();
-    }
+            r["pairs"].push_back({{"a", p.a.index}, {"b", p.b.index}, {"status", PCCD::to_string(p.status)},
+                                  {"point", vector_json(p.point)}});
+        r["touching_instances"] = touching.size();
+        const PCCD::World_counters& c = world.counters();
+        r["counters"] = {{"broad_phase_pairs", c.broad_phase_pairs},
+                         {"filtered_pairs", c.filtered_pairs},
+                         {"cached_pairs", c.cached_pairs},
+                         {"narrow_phase_queries", c.narrow_phase_queries},
+                         {"reported_pairs", c.reported_pairs}};
+        r["query_ms"] = query_ms;
+        r["memory_bytes"] = world.memory_bytes();
+        r["scene"] = o.write_scene.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(o.write_scene);
+        r["png"] = nullptr;
 
-    if (o.json) {
-        std::cout << r.dump(2) << '\n';
-        return;
-    }
-    std::printf("world: %zu instances of %zu object%s", rows.size(), files.size(), files.size() == 1 ? "" : "s");
-    for (std::size_t i = 0; i < files.size(); ++i)
-        std::printf("%s %s (%zu points)", i ? "," : ":", files[i].c_str(), objects[i]->size());
-    std::printf("\nseed %llu, threads %s%s\n", static_cast<unsigned long long>(o.seed),
-                o.threads ? std::to_string(o.threads).c_str() : "all", o.normalize ? ", normalized into [-1,1]^3" : "");
-    std::printf("broad phase: %zu box pairs, %zu filtered; narrow phase: %zu queries in %.1f ms\n", c.broad_phase_pairs,
-                c.filtered_pairs, c.narrow_phase_queries, query_ms);
-    std::printf("intersecting pairs: %zu (%zu of %zu instances touch another)\n", pairs.size(), touching.size(),
-                rows.size());
-    for (const PCCD::World_pair& p : pairs) {
-        std::printf("  %u %u %s", p.a.index, p.b.index, PCCD::to_string(p.status));
-        if (p.point.allFinite()) std::printf(" at %.6g %.6g %.6g", p.point.x(), p.point.y(), p.point.z());
-        std::printf("\n");
-    }
-    if (!o.write_scene.empty()) std::printf("wrote the scene to %s\n", o.write_scene.c_str());
-    if (!r["png"].is_null())
-        std::printf("wrote %s: touching instances red, the others grey, intersection points dark\n",
-                    r["png"].get<std::string>().c_str());
+        if (!o.png.empty()) {
+            constexpr pccd_render::Rgb touching_colour{215, 50, 40};
+            constexpr pccd_render::Rgb apart_colour{175, 175, 180};
+            pccd_render::Scene scene;
+            double smallest_splat = std::numeric_limits<double>::infinity();
+            for (std::size_t i = 0; i < rows.size(); ++i) {
+                scene.clouds.push_back(cloud_layer(*objects[object_of[i]], rows[i].pose,
+                                                   touching.contains(std::uint32_t(i)) ? touching_colour : apart_colour));
+                smallest_splat = std::min(smallest_splat, scene.clouds.back().splat_radius);
+            }
+            pccd_render::Marker_layer markers;
+            markers.colour = {40, 20, 20};
+            markers.radius = 2.0 * smallest_splat;
+            markers.min_pixels = 3.0;
+            std::vector<Eigen::Vector3d> points;
+            for (const PCCD::World_pair& p : pairs)
+                if (p.point.allFinite()) points.push_back(p.point);
+            markers.points.resize(3, Eigen::Index(points.size()));
+            for (std::size_t i = 0; i < points.size(); ++i) markers.points.col(Eigen::Index(i)) = points[i];
+            scene.markers.push_back(std::move(markers));
+            render_to_png(scene, view, width, height, o.png);
+            r["png"] = std::filesystem::absolute(o.png).string();
+        }
+
+        if (o.json) {
+            std::cout << r.dump(2) << '\n';
+            return;
+        }
+        std::printf("world: %zu instances of %zu object%s", rows.size(), files.size(), files.size() == 1 ? "" : "s");
+        for (std::size_t i = 0; i < files.size(); ++i)
+            std::printf("%s %s (%zu points)", i ? "," : ":", files[i].c_str(), objects[i]->size());
+        std::printf("; %s kernel", kernel_name<Object>());
+        std::printf("\nseed %llu, threads %s%s\n", static_cast<unsigned long long>(o.seed),
+                    o.threads ? std::to_string(o.threads).c_str() : "all", o.normalize ? ", normalized into [-1,1]^3" : "");
+        std::printf("broad phase: %zu box pairs, %zu filtered; narrow phase: %zu queries in %.1f ms\n", c.broad_phase_pairs,
+                    c.filtered_pairs, c.narrow_phase_queries, query_ms);
+        std::printf("intersecting pairs: %zu (%zu of %zu instances touch another)\n", pairs.size(), touching.size(),
+                    rows.size());
+        for (const PCCD::World_pair& p : pairs) {
+            std::printf("  %u %u %s", p.a.index, p.b.index, PCCD::to_string(p.status));
+            if (p.point.allFinite()) std::printf(" at %.6g %.6g %.6g", p.point.x(), p.point.y(), p.point.z());
+            std::printf("\n");
+        }
+        if (!o.write_scene.empty()) std::printf("wrote the scene to %s\n", o.write_scene.c_str());
+        if (!r["png"].is_null())
+            std::printf("wrote %s: touching instances red, the others grey, intersection points dark\n",
+                        r["png"].get<std::string>().c_str());
+    };
+    with_kernel(o.kernel, largest, run);
 }
 
 } // namespace
@@ -320,6 +331,8 @@ void register_world(CLI::App& app)
                     "Time budget per pair in microseconds (0: none); a pair that runs out is reported 'undecided'");
     cmd->add_option("--threads", o->threads, "Worker threads of the narrow phase (default: all available)")
         ->check(CLI::Range(1u, 4096u));
+    cmd->add_option("--kernel", o->kernel, kernel_option_help())
+        ->check(CLI::IsMember({"auto", "geodesic", "euclidean"}));
     cmd->add_flag("--json", o->json, "Print the result as JSON");
     cmd->add_option("--png", o->png, "Draw the scene into this PNG file: touching instances red, the others grey");
     cmd->add_option("--size", o->size, "--png: image size WIDTHxHEIGHT (default 1200x800)");

@@ -162,13 +162,13 @@ inline Two_clouds read_two_clouds(const std::string& file_a, const std::string& 
     return clouds;
 }
 
-/// Calls `run` with a tag of the object type `--kernel` chooses for `clouds`:
-/// `run(std::type_identity<PCCD::Euclidean_point_cloud_object<>>{})` or the same with
-/// `PCCD::Point_cloud_object<>`.
+/// Calls `run` with a tag of the object type `--kernel` chooses when the query's largest cloud has
+/// `largest_cloud` points: `run(std::type_identity<PCCD::Euclidean_point_cloud_object<>>{})` or the
+/// same with `PCCD::Point_cloud_object<>`.
 template <class Run>
-void with_kernel(const std::string& kernel, const Two_clouds& clouds, Run&& run)
+void with_kernel(const std::string& kernel, std::size_t largest_cloud, Run&& run)
 {
-    if (use_lean_kernel(kernel, clouds.largest()))
+    if (use_lean_kernel(kernel, largest_cloud))
         run(std::type_identity<PCCD::Euclidean_point_cloud_object<>>{});
     else
         run(std::type_identity<PCCD::Point_cloud_object<>>{});

@@ -144,7 +144,7 @@ elseif(CASE STREQUAL "collide_volume")
   pccd_run(OK ARGS info sphere.xyz --json MATCH "\"volume\": \"box_and_slab\"")
   pccd_run(FAIL ARGS collide sphere.xyz sphere.xyz --volume cube MATCH "--volume")
 elseif(CASE STREQUAL "kernel_option")
-  # --kernel on collide and distance: the lean object (euclidean) gives the same verdicts and the
+  # --kernel on collide, distance and world: the lean object (euclidean) gives the same verdicts and the
   # distance of surfaces 1 apart; auto picks the geodesic object below 10^6 points; a bad name is
   # refused before any work.
   pccd_run(OK ARGS collide sphere.xyz sphere.xyz --transform-b ${shift_1} --kernel euclidean --json
@@ -160,7 +160,14 @@ elseif(CASE STREQUAL "kernel_option")
   pccd_expect_between(${distance} 0.97 1.03 "the lean objects' distance of surfaces 1 apart")
   pccd_run(OK ARGS distance sphere.xyz sphere.xyz --transform-b ${shift_1} --kernel euclidean --penetration
            STDOUT_MATCH "A: sphere.xyz, 2000 points, euclidean kernel" "\nstatus: intersecting\n")
-  foreach(command collide distance)
+  # pccd world with lean objects: its pairs equal the brute force over lean objects.
+  file(REMOVE "${WORK}/world_lean_scene.csv")
+  pccd_run(OK ARGS world --generate sphere.xyz:8 --generate torus.ply:8 --scene-seed 3 --write-scene world_lean_scene.csv
+                   --kernel euclidean --json
+           MATCH "\"kernel\": \"euclidean\"" "\"instances\": 16" "\"status\": \"intersecting\"")
+  file(WRITE ${WORK}/world_lean.json "${PCCD_STDOUT}")
+  pccd_world_reference(world_lean_scene.csv world_lean.json)
+  foreach(command collide distance world)
     pccd_run(FAIL ARGS ${command} sphere.xyz sphere.xyz --kernel lean
              MATCH "--kernel: lean not in \\{auto,geodesic,euclidean\\}")
   endforeach()

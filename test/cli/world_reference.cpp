@@ -1,6 +1,7 @@
 // world_reference: the brute force that `pccd world --json` must equal, computed with the library's
 // API directly and without a Collision_world: every distinct file of the scene read
-// (PCCD::IO::read_points) and preprocessed with Point_cloud_object's defaults, then
+// (PCCD::IO::read_points) and preprocessed with the defaults of the object the JSON names
+// (Point_cloud_object, or Euclidean_point_cloud_object for "kernel": "euclidean"), then
 // PCCD::do_intersect on every pair of instances (i, j), i < j, whose filters agree, seeded by the
 // documented rule pair_seed(seed, world_pair_key(i, j)). Used by run_cli_test.cmake:
 //
@@ -11,6 +12,7 @@
 // the "pairs" array -- the same pairs in the same order, the same status, the points bit for bit
 // (null where the C++ point is NaN) -- and prints what it compared; exits with 1 and names every
 // difference otherwise, with 2 when the scene has no intersecting pair (nothing was checked).
+#include <PCCD/Euclidean_point_cloud_object.h>
 #include <PCCD/IO/read_points.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Intersection/do_intersect_many.h>
@@ -70,6 +72,36 @@ bool same_number(const nlohmann::json& value, double expected)
     return value.is_number() && value.get<double>() == expected;
 }
 
+struct Pair {
+    std::uint32_t a, b;
+    PCCD::Intersection_status status;
+    Eigen::Vector3d point;
+};
+
+/// do_intersect on every pair of instances whose filters agree, each file preprocessed once into an
+/// `Object` with its defaults: the pairs that are not separate, in order.
+template <class Object>
+std::vector<Pair> brute_force(const std::vector<Row>& rows, const PCCD::Intersection_options& options)
+{
+    std::map<std::string, Object> objects;
+    for (const Row& row : rows)
+        if (!objects.contains(row.file)) objects.emplace(row.file, Object(PCCD::IO::read_points(row.file)));
+    std::vector<Pair> truth;
+    for (std::uint32_t i = 0; i < rows.size(); ++i)
+        for (std::uint32_t j = i + 1; j < rows.size(); ++j) {
+            if (!PCCD::may_collide(rows[i].filter, rows[j].filter)) continue;
+            PCCD::Intersection_options o = options;
+            o.seed = PCCD::pair_seed(options.seed, PCCD::world_pair_key(i, j));
+            const PCCD::Intersection_result r =
+                PCCD::do_intersect(objects.at(rows[i].file), rows[i].pose, objects.at(rows[j].file), rows[j].pose, o);
+            if (r.status == PCCD::Intersection_status::separate) continue;
+            truth.push_back({i, j, r.status,
+                             r.points.empty() ? Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN())
+                                              : r.points.front().position});
+        }
+    return truth;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -84,28 +116,10 @@ int main(int argc, char** argv)
     PCCD::Intersection_options options;
     options.seed = cli.at("seed").get<std::uint64_t>();
 
-    std::map<std::string, PCCD::Point_cloud_object<>> objects;
-    for (const Row& row : rows)
-        if (!objects.contains(row.file)) objects.emplace(row.file, PCCD::Point_cloud_object<>(PCCD::IO::read_points(row.file)));
-
-    struct Pair {
-        std::uint32_t a, b;
-        PCCD::Intersection_status status;
-        Eigen::Vector3d point;
-    };
-    std::vector<Pair> truth;
-    for (std::uint32_t i = 0; i < rows.size(); ++i)
-        for (std::uint32_t j = i + 1; j < rows.size(); ++j) {
-            if (!PCCD::may_collide(rows[i].filter, rows[j].filter)) continue;
-            PCCD::Intersection_options o = options;
-            o.seed = PCCD::pair_seed(options.seed, PCCD::world_pair_key(i, j));
-            const PCCD::Intersection_result r =
-                PCCD::do_intersect(objects.at(rows[i].file), rows[i].pose, objects.at(rows[j].file), rows[j].pose, o);
-            if (r.status == PCCD::Intersection_status::separate) continue;
-            truth.push_back({i, j, r.status,
-                             r.points.empty() ? Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN())
-                                              : r.points.front().position});
-        }
+    // The objects the tool made: Point_cloud_object, or the lean one when it says "euclidean".
+    const std::vector<Pair> truth = cli.at("objects").at(0).at("kernel") == "euclidean"
+                                        ? brute_force<PCCD::Euclidean_point_cloud_object<>>(rows, options)
+                                        : brute_force<PCCD::Point_cloud_object<>>(rows, options);
 
     int differences = 0;
     const nlohmann::json& pairs = cli.at("pairs");
