@@ -172,11 +172,11 @@ void run_world(const World_command_options& o)
     for (const Object_points& p : points) largest = std::max(largest, p.points.size());
     const auto run = [&]<class Object>(std::type_identity<Object>) {
         std::vector<std::shared_ptr<const Object>> objects;
-        std::vector<double> preprocess_ms;
+        nlohmann::ordered_json object_entries = nlohmann::ordered_json::array(); // the JSON's "objects"
         for (std::size_t i = 0; i < files.size(); ++i) {
             Prepared_object<Object> prepared = prepare_object<Object>(points[i], files[i]);
+            object_entries.push_back(object_json(files[i], prepared));
             objects.push_back(std::make_shared<const Object>(std::move(prepared.object)));
-            preprocess_ms.push_back(prepared.preprocess_ms);
         }
 
         // Generated poses: uniform rotations, translations uniform in [0, side]^3; the automatic side
@@ -227,13 +227,7 @@ void run_world(const World_command_options& o)
         }
 
         nlohmann::ordered_json r;
-        r["objects"] = nlohmann::ordered_json::array();
-        for (std::size_t i = 0; i < files.size(); ++i)
-            r["objects"].push_back({{"file", files[i]},
-                                    {"points", objects[i]->size()},
-                                    {"kernel", kernel_name<Object>()},
-                                    {"sampling_radius", objects[i]->sampling_radius()},
-                                    {"preprocess_ms", preprocess_ms[i]}});
+        r["objects"] = std::move(object_entries);
         r["instances"] = rows.size();
         r["normalize"] = o.normalize;
         r["seed"] = o.seed;
