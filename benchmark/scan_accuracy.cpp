@@ -40,7 +40,10 @@ int main(int argc, char** argv)
     app.add_option("--noise-factor", object_options.bandwidth.noise_factor,
                    "support radius at least this many noise estimates (0: off)");
     std::string fit = "sphere";
-    app.add_option("--fit", fit, "surface fit: sphere or plane")->check(CLI::IsMember({"sphere", "plane"}));
+    app.add_option("--fit", fit, "surface fit: sphere, plane or imls")->check(CLI::IsMember({"sphere", "plane", "imls"}));
+    app.add_option("--theta-eps", object_options.bandwidth.theta_eps, "kernel weight threshold (default 1e-2)");
+    app.add_option("--normal-bandwidth", object_options.normal_bandwidth,
+                   "refit the oriented normals with this fraction of the kernel (default 1: no refit)");
     app.add_option("--domain-factor", object_options.domain.factor, "domain radius in k-th neighbour distances");
     app.add_option("--domain-neighbors", object_options.domain.neighbors, "k of the domain radius");
     double tolerance = 0.0;
@@ -61,7 +64,9 @@ int main(int argc, char** argv)
         return 1;
     }
     object_options.domain.enabled = !no_domain;
-    object_options.surface_fit = fit == "plane" ? PCCD::Surface_fit::plane : PCCD::Surface_fit::sphere;
+    object_options.surface_fit = fit == "plane" ? PCCD::Surface_fit::plane
+                                 : fit == "imls" ? PCCD::Surface_fit::imls
+                                                 : PCCD::Surface_fit::sphere;
     query_options.verify_contacts = !no_verify;
     query_options.certify_separation = !no_certify;
     if (cad) {

@@ -199,6 +199,7 @@ private:
                               : orient_normals(graph, cloud.coordinates(), estimate.normals);
             timings.normals += orientation_stage.finish();
         }
+        Base::refit_stage(Euclidean_distance<K>(cloud), weight, options, estimate.normals, timings);
         const bool normals_given = given_normals.has_value();
         given_normals.reset();
 

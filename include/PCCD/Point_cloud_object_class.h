@@ -378,6 +378,12 @@ private:
     /// points kept their order) and puts the given normals in the cloud's order.
     static std::vector<std::uint32_t> checked_input(Timed_cloud& built, std::optional<Eigen::Matrix3Xd>& given_normals,
                                                     const Point_cloud_object_options& options);
+    /// When options.normal_bandwidth < 1: the oriented normals fitted again with the narrower kernel
+    /// (refit_normals()), timed as part of the normals.
+    template <class Distance>
+    static void refit_stage(const Distance& distance, const Gaussian_weight& weight,
+                            const Point_cloud_object_options& options, Eigen::Matrix3Xd& normals,
+                            Preprocessing_times& timings);
     /// The kernel's weight, the CPSP map and the normal estimate (twice when the noise estimate asks
     /// for a wider automatic kernel); sets scan.noise and the timings of those stages.
     static Gaussian_weight fit_kernel(const Point_cloud<K>& cloud, const Proximity_graph& graph, double r,

@@ -234,7 +234,7 @@ Point_cloud_object<K> Point_cloud_object<K>::load_file(const std::string& path, 
     Surface_fit fit = Surface_fit::plane;
     if (version >= 3) {
         const auto stored = in.get<std::uint8_t>();
-        if (stored > std::uint8_t(Surface_fit::sphere)) in.fail(internal::concat("unknown surface fit ", int(stored)));
+        if (stored > std::uint8_t(Surface_fit::imls)) in.fail(internal::concat("unknown surface fit ", int(stored)));
         fit = Surface_fit(stored);
     }
     std::vector<std::uint32_t> input_index(n);

@@ -84,6 +84,12 @@ struct Point_cloud_object_options {
     /// set follows curvature (measured in doc/benchmarks.md "Accuracy on scans": about half the
     /// curve error of the plane on clean scans); Surface_fit::plane gives the published surface.
     Surface_fit surface_fit = Surface_fit::sphere;
+    /// The stored normals are estimated with the kernel above, oriented, and then, when this is
+    /// below 1, fitted again (refit_normals(), keeping their orientation) with a Gaussian of
+    /// normal_bandwidth times the kernel's bandwidth and support: sharper across edges, noisier on
+    /// noisy scans. Default 1 (no refit). Meant for Surface_fit::imls on parts with sharp edges, where
+    /// 0.5 is the measured choice (doc/manual/surface.md, "Sharp features"). Must lie in (0, 1].
+    double normal_bandwidth = 1.0;
     /// The surface's domain: f is defined only within D_i of the nearest cloud point (default: D_i =
     /// the distance to the 6th nearest other point).
     Surface_domain_options domain = {};

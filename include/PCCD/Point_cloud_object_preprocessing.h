@@ -84,6 +84,9 @@ std::vector<std::uint32_t> Point_cloud_object<K>::checked_input(Timed_cloud& bui
     internal::check_outlier_options(options.outliers);
     internal::check_noise_factor(options.bandwidth);
     internal::check_threads(options.threads, "point cloud object: threads");
+    if (!(options.normal_bandwidth > 0.0 && options.normal_bandwidth <= 1.0))
+        throw Invalid_input(internal::concat("point cloud object: normal_bandwidth is ", options.normal_bandwidth,
+                                             "; it must lie in (0, 1]"));
 
     // Point i of the cloud is point input_index[i] of those given; the normals given follow.
     std::vector<std::uint32_t> input_index = std::move(built.input_index);
@@ -124,6 +127,19 @@ Eigen::VectorXd Point_cloud_object<K>::domain_stage(const Point_cloud<K>& cloud,
     Eigen::VectorXd domain = reuse ? surface_domain_radii(*spacing, options.domain) : surface_domain_radii(cloud, options.domain);
     timings.outliers += stage.finish();
     return domain;
+}
+
+template <PointCloudKernel K>
+template <class Distance>
+void Point_cloud_object<K>::refit_stage(const Distance& distance, const Gaussian_weight& weight,
+                                        const Point_cloud_object_options& options, Eigen::Matrix3Xd& normals,
+                                        Preprocessing_times& timings)
+{
+    if (!(options.normal_bandwidth < 1.0)) return;
+    internal::Stage_timer stage(options, Preprocessing_stage::normals, distance.size());
+    refit_normals(distance, Gaussian_weight(weight.bandwidth() * options.normal_bandwidth, weight.threshold()), normals,
+                  options.threads);
+    timings.normals += stage.finish();
 }
 
 template <PointCloudKernel K>
@@ -193,6 +209,7 @@ auto Point_cloud_object<K>::preprocess(Timed_cloud built, std::optional<Eigen::M
         given_normals ? orient_normals_with_hints(*graph, cloud.coordinates(), estimate.normals, *given_normals)
                       : orient_normals(*graph, cloud.coordinates(), estimate.normals);
     timings.normals += orientation_stage.finish();
+    refit_stage(Geodesic_distance<K>(cloud, cpsp), weight, options, estimate.normals, timings);
     Eigen::VectorXd domain = domain_stage(cloud, spacing, options, timings);
 
     return std::make_shared<const Data>(make_data(std::move(cloud), std::move(graph), std::move(cpsp), r, weight,

@@ -73,8 +73,11 @@ PCCD::Point_cloud_object_options object_options(const py::kwargs& kwargs)
              const auto name = option_value<std::string>(v, k);
              if (name == "sphere") o.surface_fit = PCCD::Surface_fit::sphere;
              else if (name == "plane") o.surface_fit = PCCD::Surface_fit::plane;
-             else throw py::value_error("Object(): surface_fit must be 'sphere' or 'plane', not '" + name + "'");
+             else if (name == "imls") o.surface_fit = PCCD::Surface_fit::imls;
+             else throw py::value_error("Object(): surface_fit must be 'sphere', 'plane' or 'imls', not '" + name + "'");
          }},
+        {"normal_bandwidth",
+         [](auto& o, const py::handle& v, const std::string& k) { o.normal_bandwidth = option_value<double>(v, k); }},
         {"domain", [](auto& o, const py::handle& v, const std::string& k) { o.domain.enabled = option_value<bool>(v, k); }},
         {"domain_factor", [](auto& o, const py::handle& v, const std::string& k) { o.domain.factor = option_value<double>(v, k); }},
         {"remove_outliers", [](auto& o, const py::handle& v, const std::string& k) { o.outliers.remove = option_value<bool>(v, k); }},
@@ -191,8 +194,12 @@ normals : array_like, optional
     noise_factor : float
         Noise-aware support: the support radius is at least noise_factor times the noise
         estimate (default 15; 0 disables it).
-    surface_fit : {'sphere', 'plane'}
-        Local shape of the surface fit (default 'sphere').
+    surface_fit : {'sphere', 'plane', 'imls'}
+        Local shape of the surface fit (default 'sphere'); 'imls' keeps sharp edges (with
+        normal_bandwidth=0.75 and theta_eps=3e-5 for parts with sharp edges).
+    normal_bandwidth : float
+        Refit the oriented normals with this fraction of the kernel, in (0, 1] (default 1: no
+        refit).
     domain : bool
         Restrict the surface to a domain around the points (default True).
     domain_factor : float

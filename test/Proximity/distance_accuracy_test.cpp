@@ -195,15 +195,30 @@ Cloud vertex_cloud(const PCCD::testing::Scan_model& model, double noise, std::ui
     return c;
 }
 
-/// The area sample of the model (its clean cloud's density), with noise in its clean spacing.
-Cloud area_cloud(const PCCD::testing::Scan_model& model, double noise, std::uint64_t seed)
+/// The options of the sharp-feature surface (doc/manual/surface.md, "Sharp features"): the IMLS
+/// fit, a kernel of 2/3 the default bandwidth within the same support (theta_eps 3e-5) and the
+/// normals refitted with 3/4 of it.
+PCCD::Point_cloud_object_options sharp_options()
+{
+    PCCD::Point_cloud_object_options o;
+    o.surface_fit = PCCD::Surface_fit::imls;
+    o.bandwidth.theta_eps = 3e-5;
+    o.normal_bandwidth = 0.75;
+    return o;
+}
+
+/// The area sample of the model (its clean cloud's density), with noise in its clean spacing; with
+/// `sharp`, the same points made into the sharp-feature surface.
+Cloud area_cloud(const PCCD::testing::Scan_model& model, double noise, std::uint64_t seed, bool sharp = false)
 {
     Cloud c;
-    c.name = noise > 0.0 ? "area, noise 0.3" : "area";
+    c.name = std::string(noise > 0.0 ? "area, noise 0.3" : "area") + (sharp ? ", sharp" : "");
     c.noisy = noise > 0.0;
     c.spacing = model.clean_spacing;
     c.sampling_radius = model.clean_r;
-    c.object = PCCD::testing::make_scan_cloud(model, {c.name, 1.0, noise, 0.0}, seed).object;
+    c.object = PCCD::testing::make_scan_cloud(model, {c.name, 1.0, noise, 0.0}, seed,
+                                              sharp ? sharp_options() : PCCD::Point_cloud_object_options{})
+                   .object;
     return c;
 }
 
@@ -302,7 +317,7 @@ Row evaluate(const PCCD::testing::Scan_model& model, const Cloud& cloud, const s
 
 void print_header()
 {
-    std::printf("%-13s %-20s %6s %8s | %4s %7s %7s %7s %7s %9s %7s | %9s %6s | %4s %7s %7s %10s %7s %5s | %9s\n", "model",
+    std::printf("%-13s %-27s %6s %8s | %4s %7s %7s %7s %7s %9s %7s | %9s %6s | %4s %7s %7s %10s %7s %5s | %9s\n", "model",
                 "cloud", "points", "s", "n", "med/s", "p99/s", "bias/s", "f@ex/s", "covered", "wit.bad", "status", "vs ex.", "n",
                 "depth/s", "angle", "angle(wp)", "ang@wit", "out", "us/query");
 }
@@ -316,7 +331,7 @@ void print_row(const Row& r)
     std::snprintf(covered, sizeof covered, "%zu/%zu", r.covered, n);
     char well_posed[32];
     std::snprintf(well_posed, sizeof well_posed, "%.1f (%zu)", median_of(r.well_posed_angles), r.well_posed_angles.size());
-    std::printf("%-13s %-20s %6zu %8.5f | %4zu %7.3f %7.3f %+7.3f %+7.3f %9s %7zu | %9s %6zu | %4zu %7.3f %7.1f %10s %7.1f %5zu | %9.0f\n",
+    std::printf("%-13s %-27s %6zu %8.5f | %4zu %7.3f %7.3f %+7.3f %+7.3f %9s %7zu | %9s %6zu | %4zu %7.3f %7.1f %10s %7.1f %5zu | %9.0f\n",
                 r.model.c_str(), r.cloud.c_str(), r.points, r.spacing, n, median_of(r.distance_errors), p99_of(r.distance_errors),
                 median_of(r.signed_errors), median_of(r.surface_offsets), covered, r.witness_off_surface + r.witness_gap_mismatch,
                 status, r.status_vs_exact, r.depth_errors.size(), median_of(r.depth_errors), median_of(r.normal_angles),
@@ -387,7 +402,7 @@ int main()
     std::vector<std::string> models = scanned_models;
     models.insert(models.end(), cad_models.begin(), cad_models.end());
     std::vector<Row> rows;
-    std::vector<bool> noisy;
+    std::vector<bool> noisy, sharp;
     std::size_t closed_models = 0;
     const auto start = Clock::now();
     print_header();
@@ -406,12 +421,15 @@ int main()
         }
         clouds.push_back(area_cloud(model, 0.0, 2026));
         clouds.push_back(area_cloud(model, 0.3, 2027));
+        clouds.push_back(area_cloud(model, 0.0, 2026, true));
+        clouds.push_back(area_cloud(model, 0.3, 2027, true));
         const auto truth_start = Clock::now();
         const std::vector<Pose_truth> truth = exact_answers(model, depth_sample_spacing * model.clean_spacing);
         std::printf("%-13s exact truth of %zu poses: %.1f s\n", file.c_str(), truth.size(), PCCD::testing::ms_since(truth_start) / 1e3);
         for (const Cloud& c : clouds) {
             rows.push_back(evaluate(model, c, truth, true));
             noisy.push_back(c.noisy);
+            sharp.push_back(c.object->surface().fit() == PCCD::Surface_fit::imls);
             print_row(rows.back());
             std::fflush(stdout);
         }
@@ -429,12 +447,42 @@ int main()
 
     std::printf("\nassertions:\n");
     check(closed_models >= 2 + (pccd_test::debug_build ? 0 : 4), "closed models evaluated: " + std::to_string(closed_models));
-    std::size_t covered = 0, separate = 0;
+    std::size_t covered = 0, separate = 0, sharp_covered = 0, sharp_separate = 0;
     for (std::size_t i = 0; i < rows.size(); ++i) {
+        if (sharp[i]) { // the sharp-feature surface: what it is for, below
+            sharp_covered += rows[i].covered;
+            sharp_separate += rows[i].distance_errors.size();
+            continue;
+        }
         check_row(rows[i]);
         covered += rows[i].covered;
         separate += rows[i].distance_errors.size();
     }
+    // The sharp-feature surface (IMLS): the status is still do_intersect()'s on every non-grazing
+    // pose, and on the clean area clouds its distance error is well below the default surface's
+    // (measured 0.30-0.56 times the default's median on the eight models; asserted <= 0.7 times).
+    // Its interval is printed, not asserted: the IMLS lies a little outside the points on convex
+    // parts, so the true distance can exceed upper_bound, which bounds the implicit surfaces'
+    // distance (doc/manual/surface.md, "Sharp features").
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        if (!sharp[i]) continue;
+        const Row& r = rows[i];
+        const std::string name = r.model + " / " + r.cloud + ": ";
+        check(r.status_poses > 0 && r.status_mismatches == 0,
+              name + "status as do_intersect() on every non-grazing pose: " + std::to_string(r.status_mismatches) + "/" +
+                  std::to_string(r.status_poses) + " differ");
+        if (noisy[i]) continue;
+        for (std::size_t j = 0; j < rows.size(); ++j)
+            if (!sharp[j] && !noisy[j] && rows[j].model == r.model && rows[j].cloud == "area") {
+                char line[200];
+                std::snprintf(line, sizeof line, "distance error median %.3f s <= 0.7 x the default surface's %.3f s",
+                              median_of(r.distance_errors), median_of(rows[j].distance_errors));
+                check(median_of(r.distance_errors) <= 0.7 * median_of(rows[j].distance_errors), name + line);
+            }
+    }
+    std::printf("sharp-feature surface: exact distance in [lower - 0.5 s, upper + 0.5 s] on %zu of %zu separate poses "
+                "(not asserted)\n",
+                sharp_covered, sharp_separate);
     char buf[160];
     std::snprintf(buf, sizeof buf, "exact distance in [lower - 0.5 s, upper + 0.5 s] on %zu of %zu separate poses (>= 99.5 %%)",
                   covered, separate);

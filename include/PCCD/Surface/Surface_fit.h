@@ -1,7 +1,9 @@
 // PCCD/Surface/Surface_fit.h -- which local shape the implicit surface fits to the weighted
-// neighbours of x (doc/manual/surface.md, "The fit: plane or sphere"): the published plane, or an
-// algebraic sphere fitted to the points and their oriented normals, which follows curvature and so
-// removes the plane's shrinkage on curved parts; the sphere's closed-form solution is here.
+// neighbours of x (doc/manual/surface.md, "The fit: plane or sphere", "Sharp features"): the
+// published plane, an algebraic sphere fitted to the points and their oriented normals, which
+// follows curvature and so removes the plane's shrinkage on curved parts, or the mean of the
+// neighbours' tangent planes (IMLS), which keeps sharp edges; the closed forms of the last two are
+// here.
 #pragma once
 
 #include <cmath>
@@ -15,12 +17,13 @@
 
 namespace PCCD {
 
-/// "plane" or "sphere".
+/// "plane", "sphere" or "imls".
 inline const char* to_string(Surface_fit fit)
 {
     switch (fit) {
     case Surface_fit::plane: return "plane";
     case Surface_fit::sphere: return "sphere";
+    case Surface_fit::imls: return "imls";
     }
     return "unknown";
 }
@@ -77,6 +80,24 @@ inline std::optional<Sphere_value> fit_sphere(const Sphere_sums& sums, const Eig
     const double discriminant = 0.25 * length * length - u0 * u4;
     if (!(length > 0.0) || !(discriminant >= 0.0) || !(u.dot(reference) > 0.0)) return std::nullopt;
     const Sphere_value result{u0 / (0.5 * length + std::sqrt(discriminant)), u / length};
+    if (!std::isfinite(result.value) || !all_finite(result.normal)) return std::nullopt;
+    return result;
+}
+
+/// Shortest weighted mean normal |m| / W with which fit_imls() answers: below it the neighbours'
+/// normals cancel (a part thinner than the kernel seen from its edge, or misoriented patches), f
+/// would be divided by almost nothing and n(x) would be noise.
+inline constexpr double imls_min_mean_normal = 0.1;
+
+/// The IMLS value and normal at x from the same sums (Surface_fit::imls): with y_i = p_i - x,
+/// f = -t / |m| (t = sum w_i y_i . n_i, m = sum w_i n_i), n = m / |m|. nullopt when |m| / W <
+/// imls_min_mean_normal or m points against `reference`.
+inline std::optional<Sphere_value> fit_imls(const Sphere_sums& sums, const Eigen::Vector3d& reference)
+{
+    if (!(sums.weight > 0.0)) return std::nullopt;
+    const double length = sums.normal.norm();
+    if (!(length >= imls_min_mean_normal * sums.weight) || !(sums.normal.dot(reference) > 0.0)) return std::nullopt;
+    const Sphere_value result{-sums.offset_dot_normal / length, sums.normal / length};
     if (!std::isfinite(result.value) || !all_finite(result.normal)) return std::nullopt;
     return result;
 }

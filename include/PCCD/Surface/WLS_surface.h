@@ -65,10 +65,11 @@ struct Surface_evaluation {
 
     Surface_status status = Surface_status::outside_support;
     /// f(x): n(x) . (x - a(x)) for the plane fit, the signed distance from x to the fitted sphere
-    /// for the sphere fit (Surface_fit); NaN unless defined.
+    /// for the sphere fit, the mean of the neighbours' tangent-plane distances for the IMLS fit
+    /// (Surface_fit); NaN unless defined.
     double value = std::numeric_limits<double>::quiet_NaN();
     /// n(x), unit length, oriented like the stored normal of `nearest` (the sphere fit: the sphere's
-    /// gradient direction at x); NaN unless defined.
+    /// gradient direction at x; the IMLS fit: the weighted mean normal's); NaN unless defined.
     Eigen::Vector3d normal = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
     /// a(x), the weighted mean; NaN when outside_support.
     Eigen::Vector3d centroid = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
@@ -93,7 +94,8 @@ struct Surface_evaluation {
 /// the normal stored at x's nearest cloud point. Only the points with d(x, p_i) <=
 /// weight.support_radius() take part. With Surface_fit::sphere, f(x) is instead the signed distance
 /// from x to the algebraic sphere fitted to the same weighted points and their stored normals
-/// (doc/manual/surface.md, "The fit: plane or sphere").
+/// (doc/manual/surface.md, "The fit: plane or sphere"); with Surface_fit::imls the weighted mean of
+/// the distances from x to the neighbours' tangent planes ("Sharp features").
 ///
 /// \tparam Distance a model of SurfaceDistance: Euclidean_distance or Geodesic_distance.
 /// \tparam Weight a model of SurfaceWeight (Gaussian_weight by default).
@@ -122,8 +124,9 @@ public:
     ///         `domain_radii` is neither empty nor of size N or holds a radius that is NaN or <= 0, or
     ///         if the weight's support radius exceeds `distance.max_radius()` by more than a relative
     ///         1e-12 (e.g. a CPSP map built for a smaller bound than the kernel needs).
-    /// \param fit the local shape fitted at each x (default: the published plane). The sphere fit
-    ///        reads the stored normals of the neighbours, so they must be consistently oriented.
+    /// \param fit the local shape fitted at each x (default: the published plane). The sphere and
+    ///        IMLS fits read the stored normals of the neighbours, so they must be consistently
+    ///        oriented.
     WLS_surface(Distance distance, Weight weight, Eigen::Matrix3Xd normals, Eigen::VectorXd domain_radii = {},
                 Surface_fit fit = Surface_fit::plane)
         : WLS_surface(std::move(distance), std::move(weight), std::make_shared<const Eigen::Matrix3Xd>(std::move(normals)),
@@ -227,7 +230,7 @@ private:
           m_domain(std::move(domain_radii)),
           m_fit(fit)
     {
-        if (fit != Surface_fit::plane && fit != Surface_fit::sphere)
+        if (fit != Surface_fit::plane && fit != Surface_fit::sphere && fit != Surface_fit::imls)
             throw Invalid_input(internal::concat("WLS surface: unknown surface fit ", int(fit)));
         if (m_domain->size() != 0 && std::size_t(m_domain->size()) != m_distance.size())
             throw Invalid_input(internal::concat("WLS surface: ", m_domain->size(), " domain radii given for ",
@@ -264,7 +267,7 @@ private:
         const Eigen::Vector3d offset = m_distance.position(j) - x;
         const double w = double(m_weight(d));
         sums.plane.add(offset, w);
-        if (m_fit == Surface_fit::sphere) {
+        if (m_fit != Surface_fit::plane) {
             const auto normal = m_normals->col(Eigen::Index(j));
             // A point without a normal (zero column) takes part in the plane only.
             if (!normal.isZero(0.0)) sums.sphere.add(offset, w, normal);
@@ -294,10 +297,11 @@ private:
         result.status = Surface_status::defined;
         result.normal = fit.normal.dot(reference) < 0.0 ? Eigen::Vector3d(-fit.normal) : fit.normal;
         result.value = result.normal.dot(x - fit.centroid);
-        if (m_fit == Surface_fit::sphere)
-            if (const auto sphere = internal::fit_sphere(all.sphere, reference)) {
-                result.value = sphere->value;
-                result.normal = sphere->normal;
+        if (m_fit != Surface_fit::plane)
+            if (const auto other = m_fit == Surface_fit::sphere ? internal::fit_sphere(all.sphere, reference)
+                                                                : internal::fit_imls(all.sphere, reference)) {
+                result.value = other->value;
+                result.normal = other->normal;
             }
         return result;
     }

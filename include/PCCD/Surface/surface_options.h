@@ -48,6 +48,20 @@ enum class Surface_fit : std::uint8_t {
     /// (no spread of the normals' positions, or the fitted normals disagree with the nearest
     /// point's), the plane answers.
     sphere = 1,
+    /// Implicit moving least squares (IMLS; Kolluri, "Provably good moving least squares", ACM TALG
+    /// 2008; the non-robust form of Oztireli, Guennebaud and Gross's RIMLS, Eurographics 2009): the
+    /// weighted mean of the signed distances from x to the neighbours' own tangent planes,
+    /// f(x) = sum theta_i n_i . (x - p_i) / sum theta_i, divided by the length of the weighted mean
+    /// normal m(x) = sum theta_i n_i / sum theta_i so that f grows like a distance; n(x) = m(x) /
+    /// |m(x)|. Exact on planes; where two faces meet at an edge or a corner, x on both tangent planes
+    /// gives f = 0, so the zero set keeps the edge instead of cutting it (the plane and the sphere
+    /// fit put it inside, by about the kernel's radius at a right-angled corner), as far as the stored
+    /// normals themselves are sharp there (Point_cloud_object_options::normal_bandwidth). On convex
+    /// curved parts its zero set lies a little outside the points (by about kappa h^2 / 2, the
+    /// plane's shrinkage with the opposite sign). Where m(x) is shorter than 0.1 or points against the
+    /// nearest point's normal, the plane answers. Measured against the exact meshes in
+    /// doc/manual/surface.md ("Sharp features").
+    imls = 2,
 };
 
 /// Options of surface_domain_radii(). Defaults measured in doc/benchmarks.md "Accuracy on scans".
