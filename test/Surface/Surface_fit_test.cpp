@@ -47,6 +47,21 @@ PCCD::internal::Sphere_sums sphere_sums(const Eigen::Vector3d& centre, double ra
 
 using PCCD::testing::upper_median;
 
+/// 30 points of the plane through `origin` with normal `normal`, uniform in the square of half width
+/// `half_width` about it, with that normal and random weights; offsets from x.
+PCCD::internal::Sphere_sums plane_sums(const Eigen::Vector3d& origin, const Eigen::Vector3d& normal,
+                                       const Eigen::Vector3d& x, double half_width, PCCD::Random_engine& engine)
+{
+    const Eigen::Vector3d t1 = normal.unitOrthogonal(), t2 = normal.cross(t1);
+    PCCD::internal::Sphere_sums sums;
+    for (int k = 0; k < 30; ++k) {
+        const Eigen::Vector3d p = origin + PCCD::uniform_real(engine, -half_width, half_width) * t1 +
+                                  PCCD::uniform_real(engine, -half_width, half_width) * t2;
+        sums.add(p - x, PCCD::uniform_real(engine, 0.1, 1.0), normal);
+    }
+    return sums;
+}
+
 /// The cube [-1, 1]^3 as 12 triangles, outward by the right-hand rule.
 struct Cube_mesh {
     std::vector<Eigen::Vector3d> vertices;
@@ -64,6 +79,14 @@ Cube_mesh cube_mesh()
         m.triangles.push_back({q[0], q[2], q[3]});
     }
     return m;
+}
+
+/// 6,000 points drawn by area on the cube [-1, 1]^3 (seed `seed`), with their exact face normals.
+PCCD::Triangle_mesh_sample cube_sample(std::uint64_t seed)
+{
+    const Cube_mesh cube = cube_mesh();
+    PCCD::Random_engine engine(seed);
+    return PCCD::sample_triangle_mesh(cube.vertices, cube.triangles, 6000, engine);
 }
 
 /// The exact signed distance to the cube [-1, 1]^3.
@@ -119,14 +142,8 @@ TEST_CASE("the closed-form sphere fit of a plane is the plane", "[surface]")
     PCCD::Random_engine engine(21);
     const Eigen::Vector3d normal = Eigen::Vector3d(0.2, -0.5, 1.0).normalized();
     const Eigen::Vector3d origin(1.0, 2.0, 3.0);
-    const Eigen::Vector3d t1 = normal.unitOrthogonal(), t2 = normal.cross(t1);
-    const Eigen::Vector3d x = origin + 0.3 * t1 + 0.25 * normal;
-    PCCD::internal::Sphere_sums sums;
-    for (int k = 0; k < 30; ++k) {
-        const Eigen::Vector3d p =
-            origin + PCCD::uniform_real(engine, -1.0, 1.0) * t1 + PCCD::uniform_real(engine, -1.0, 1.0) * t2;
-        sums.add(p - x, PCCD::uniform_real(engine, 0.1, 1.0), normal);
-    }
+    const Eigen::Vector3d x = origin + 0.3 * normal.unitOrthogonal() + 0.25 * normal;
+    const PCCD::internal::Sphere_sums sums = plane_sums(origin, normal, x, 1.0, engine);
     const auto fit = PCCD::internal::fit_sphere(sums, normal);
     REQUIRE(fit.has_value());
     CHECK(fit->value == Approx(0.25).margin(1e-12));
@@ -230,15 +247,9 @@ TEST_CASE("the closed-form IMLS fit is exact on a plane and zero where three fac
     PCCD::Random_engine engine(71);
     const Eigen::Vector3d n = Eigen::Vector3d(1, -2, 0.5).normalized();
     const Eigen::Vector3d origin(0.2, 0.1, -0.4);
-    const Eigen::Vector3d u = n.unitOrthogonal(), v = n.cross(u);
     for (const double offset : {-0.3, 0.0, 0.02, 0.5}) {
-        const Eigen::Vector3d x = origin + 0.1 * u + offset * n;
-        PCCD::internal::Sphere_sums sums;
-        for (int k = 0; k < 30; ++k) {
-            const Eigen::Vector3d p =
-                origin + PCCD::uniform_real(engine, -0.5, 0.5) * u + PCCD::uniform_real(engine, -0.5, 0.5) * v;
-            sums.add(p - x, PCCD::uniform_real(engine, 0.1, 1.0), n);
-        }
+        const Eigen::Vector3d x = origin + 0.1 * n.unitOrthogonal() + offset * n;
+        const PCCD::internal::Sphere_sums sums = plane_sums(origin, n, x, 0.5, engine);
         const auto fit = PCCD::internal::fit_imls(sums, n);
         REQUIRE(fit.has_value());
         CHECK(fit->value == Approx(offset).margin(1e-12));
@@ -287,9 +298,7 @@ TEST_CASE("on a sampled cube the IMLS fit keeps the corners and edges the other 
     // below 0.1 spacing; and the objects built from the points alone ({imls, normal_bandwidth 0.75}
     // against the default sphere fit), whose normals are estimated, oriented and refitted: measured
     // 0.012 against 0.028, asserted imls below half.
-    const Cube_mesh cube = cube_mesh();
-    PCCD::Random_engine engine(81);
-    const auto sample = PCCD::sample_triangle_mesh(cube.vertices, cube.triangles, 6000, engine);
+    const auto sample = cube_sample(81);
     const PCCD::Point_cloud<> cloud(sample.points);
     const double spacing = cloud.mean_spacing();
     const PCCD::Gaussian_weight weight(0.1, 0.01);
@@ -347,9 +356,7 @@ TEST_CASE("refit_normals sharpens normals across edges and keeps their orientati
     // spacings) bend across the edges; refitted with half its bandwidth and support they lie closer
     // to the exact face normals at the points within 3 spacings of an edge (measured median angle
     // 0.44 rad before, 0.21 after; asserted: below 0.7 times), and each keeps its sign.
-    const Cube_mesh cube = cube_mesh();
-    PCCD::Random_engine engine(91);
-    const auto sample = PCCD::sample_triangle_mesh(cube.vertices, cube.triangles, 6000, engine);
+    const auto sample = cube_sample(91);
     const PCCD::Point_cloud<> cloud(sample.points);
     const double spacing = cloud.mean_spacing();
     const PCCD::Euclidean_distance<> distance(cloud);

@@ -21,6 +21,23 @@
 
 namespace PCCD {
 
+namespace internal {
+
+/// The WLS sums of cloud point i's weighted neighbours within `support` (offsets from p_i).
+template <class Distance, class Weight>
+Wls_sums sums_at_point(const Distance& distance, const Weight& weight, double support, std::size_t i)
+{
+    const auto index = static_cast<std::uint32_t>(i);
+    const Eigen::Vector3d x = distance.position(index);
+    Wls_sums sums;
+    distance.for_each_neighbor_of_point(index, support, [&](std::uint32_t j, double d) {
+        sums.add(distance.position(j) - x, double(weight(d)));
+    });
+    return sums;
+}
+
+} // namespace internal
+
 /// Unoriented normals of a cloud.
 struct Normal_estimate {
     /// 3 x N: column i is the unit eigenvector of the smallest eigenvalue of B(p_i), with the
@@ -78,12 +95,8 @@ Normal_estimate estimate_normals(const Distance& distance, const Weight& weight,
     internal::with_threads(threads, [&] {
         internal::parallel_for_ranges(n, 256, [&](std::size_t begin, std::size_t end) {
             for (std::size_t i = begin; i < end; ++i) {
-                const auto index = static_cast<std::uint32_t>(i);
-                const Eigen::Vector3d x = distance.position(index);
-                internal::Wls_sums sums;
-                distance.for_each_neighbor_of_point(index, support, [&](std::uint32_t j, double d) {
-                    sums.add(distance.position(j) - x, double(weight(d)));
-                });
+                const Eigen::Vector3d x = distance.position(static_cast<std::uint32_t>(i));
+                const internal::Wls_sums sums = internal::sums_at_point(distance, weight, support, i);
                 if (sums.count == 0 || !(sums.weight > 0.0)) continue;
                 const internal::Wls_fit fit = internal::finish_fit(x, sums);
                 if (fit.determined) result.normals.col(Eigen::Index(i)) = fit.normal;
@@ -134,14 +147,10 @@ std::size_t refit_normals(const Distance& distance, const Weight& weight, Eigen:
             for (std::size_t i = begin; i < end; ++i) {
                 const auto old = normals.col(Eigen::Index(i));
                 if (old.isZero(0.0)) continue;
-                const auto index = static_cast<std::uint32_t>(i);
-                const Eigen::Vector3d x = distance.position(index);
-                internal::Wls_sums sums;
-                distance.for_each_neighbor_of_point(index, support, [&](std::uint32_t j, double d) {
-                    sums.add(distance.position(j) - x, double(weight(d)));
-                });
+                const internal::Wls_sums sums = internal::sums_at_point(distance, weight, support, i);
                 if (sums.count == 0 || !(sums.weight > 0.0)) continue;
-                const internal::Wls_fit fit = internal::finish_fit(x, sums);
+                const internal::Wls_fit fit =
+                    internal::finish_fit(distance.position(static_cast<std::uint32_t>(i)), sums);
                 if (!fit.determined) continue;
                 normals.col(Eigen::Index(i)) = fit.normal.dot(old) < 0.0 ? Eigen::Vector3d(-fit.normal) : fit.normal;
                 refitted[i] = 1;
