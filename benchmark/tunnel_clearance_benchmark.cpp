@@ -9,6 +9,8 @@
 //                       [--cap 0.2] [--seed 1] [--threads T] [--repetitions 5] [--write-scene DIR]
 //                       [--csv FILE] [--kernel geodesic|euclidean]  (the tunnel's object; the wagon is geodesic)
 //                       [--kd all|capped]  (capped: the unbounded kd method is not run, its figures nan)
+//                       [--surface default|sharp]  (sharp: both objects with the sharp-feature options of
+//                       doc/manual/surface.md: Surface_fit::imls, theta_eps 3e-5, normal_bandwidth 0.75)
 //
 // Per pose (wagon pose from the scene's path, tunnel at the identity), three answers:
 //   exact   exact_distance(wagon mesh, pose, tunnel mesh, identity): the clearance (0 if touching);
@@ -83,6 +85,8 @@ struct Arguments {
     /// --kd all (default) or capped: with capped the unbounded kd method is not run (its figures are
     /// nan); the bounded one gives the same clearances below the cap in a thousandth of the time.
     bool skip_kd = false;
+    /// --surface default or sharp (the sharp-feature surface for both objects).
+    bool sharp = false;
 };
 
 Arguments parse(int argc, char** argv)
@@ -103,6 +107,7 @@ Arguments parse(int argc, char** argv)
         else if (key == "--csv") a.csv = value;
         else if (key == "--kernel" && (value == "geodesic" || value == "euclidean")) a.kernel = value;
         else if (key == "--kd" && (value == "all" || value == "capped")) a.skip_kd = value == "capped";
+        else if (key == "--surface" && (value == "default" || value == "sharp")) a.sharp = value == "sharp";
         else throw std::invalid_argument("unknown option " + key);
     }
     if (a.repetitions < 1) throw std::invalid_argument("--repetitions must be >= 1");
@@ -263,7 +268,12 @@ void run(const Arguments& args)
     // The rest for the tunnel object of --kernel.
     const auto with_tunnel = [&](auto tag) {
     using Tunnel = typename decltype(tag)::type;
-    const PCCD::Point_cloud_object_options object_options{.threads = args.threads};
+    PCCD::Point_cloud_object_options object_options{.threads = args.threads};
+    if (args.sharp) {
+        object_options.surface_fit = PCCD::Surface_fit::imls;
+        object_options.bandwidth.theta_eps = 3e-5;
+        object_options.normal_bandwidth = 0.75;
+    }
     reset_peak_memory();
     const auto before_objects = memory_mib();
     start = Clock::now();
