@@ -87,8 +87,10 @@ struct Point_cloud_object_options {
     /// The stored normals are estimated with the kernel above, oriented, and then, when this is
     /// below 1, fitted again (refit_normals(), keeping their orientation) with a Gaussian of
     /// normal_bandwidth times the kernel's bandwidth and support: sharper across edges, noisier on
-    /// noisy scans. Default 1 (no refit). Meant for Surface_fit::imls on parts with sharp edges, where
-    /// 0.5 is the measured choice (doc/manual/surface.md, "Sharp features"). Must lie in (0, 1].
+    /// noisy scans. Default 1 (no refit). Meant for Surface_fit::imls on parts with sharp edges: with
+    /// bandwidth.theta_eps = 3e-5 (a Gaussian of 2/3 the default bandwidth within the same support),
+    /// 0.75 (normals from half the default bandwidth) is the measured choice (doc/manual/surface.md,
+    /// "Sharp features"). Must lie in (0, 1].
     double normal_bandwidth = 1.0;
     /// The surface's domain: f is defined only within D_i of the nearest cloud point (default: D_i =
     /// the distance to the 6th nearest other point).

@@ -55,7 +55,7 @@ enum class Surface_fit : std::uint8_t {
     /// normal m(x) = sum theta_i n_i / sum theta_i so that f grows like a distance; n(x) = m(x) /
     /// |m(x)|. Exact on planes; where two faces meet at an edge or a corner, x on both tangent planes
     /// gives f = 0, so the zero set keeps the edge instead of cutting it (the plane and the sphere
-    /// fit put it inside, by about the kernel's radius at a right-angled corner), as far as the stored
+    /// fit put it inside: by 1.3 and 0.7 spacings at a sampled cube's edges and corners), as far as the stored
     /// normals themselves are sharp there (Point_cloud_object_options::normal_bandwidth). On convex
     /// curved parts its zero set lies a little outside the points (by about kappa h^2 / 2, the
     /// plane's shrinkage with the opposite sign). Where m(x) is shorter than 0.1 or points against the
