@@ -84,7 +84,8 @@ std::vector<std::uint32_t> Point_cloud_object<K>::checked_input(Timed_cloud& bui
     internal::check_outlier_options(options.outliers);
     internal::check_noise_factor(options.bandwidth);
     internal::check_threads(options.threads, "point cloud object: threads");
-    if (!(options.normal_bandwidth > 0.0 && options.normal_bandwidth <= 1.0))
+    // Quiet comparisons: a NaN must be refused, not trap under floating-point exceptions.
+    if (!(std::isgreater(options.normal_bandwidth, 0.0) && std::islessequal(options.normal_bandwidth, 1.0)))
         throw Invalid_input(internal::concat("point cloud object: normal_bandwidth is ", options.normal_bandwidth,
                                              "; it must lie in (0, 1]"));
 
