@@ -37,6 +37,7 @@
 #include <PCCD/testing/csv.h>
 #include <PCCD/testing/process_memory.h>
 #include <PCCD/testing/scenes/Tunnel_scene.h>
+#include <PCCD/testing/sharp_feature_options.h>
 #include <PCCD/testing/statistics.h>
 #include <PCCD/testing/timing.h>
 
@@ -268,12 +269,9 @@ void run(const Arguments& args)
     // The rest for the tunnel object of --kernel.
     const auto with_tunnel = [&](auto tag) {
     using Tunnel = typename decltype(tag)::type;
-    PCCD::Point_cloud_object_options object_options{.threads = args.threads};
-    if (args.sharp) {
-        object_options.surface_fit = PCCD::Surface_fit::imls;
-        object_options.bandwidth.theta_eps = 3e-5;
-        object_options.normal_bandwidth = 0.75;
-    }
+    const PCCD::Point_cloud_object_options defaults{.threads = args.threads};
+    const PCCD::Point_cloud_object_options object_options =
+        args.sharp ? PCCD::testing::sharp_feature_options(defaults) : defaults;
     reset_peak_memory();
     const auto before_objects = memory_mib();
     start = Clock::now();

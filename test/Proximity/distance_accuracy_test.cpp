@@ -36,6 +36,7 @@
 #include <PCCD/Exact/mesh_distance.h>
 #include <PCCD/Proximity/distance.h>
 #include <PCCD/testing/scan_validation.h>
+#include <PCCD/testing/sharp_feature_options.h>
 
 #include <algorithm>
 #include <cmath>
@@ -195,18 +196,6 @@ Cloud vertex_cloud(const PCCD::testing::Scan_model& model, double noise, std::ui
     return c;
 }
 
-/// The options of the sharp-feature surface (doc/manual/surface.md, "Sharp features"): the IMLS
-/// fit, a kernel of 2/3 the default bandwidth within the same support (theta_eps 3e-5) and the
-/// normals refitted with 3/4 of it.
-PCCD::Point_cloud_object_options sharp_options()
-{
-    PCCD::Point_cloud_object_options o;
-    o.surface_fit = PCCD::Surface_fit::imls;
-    o.bandwidth.theta_eps = 3e-5;
-    o.normal_bandwidth = 0.75;
-    return o;
-}
-
 /// The area sample of the model (its clean cloud's density), with noise in its clean spacing; with
 /// `sharp`, the same points made into the sharp-feature surface.
 Cloud area_cloud(const PCCD::testing::Scan_model& model, double noise, std::uint64_t seed, bool sharp = false)
@@ -217,7 +206,7 @@ Cloud area_cloud(const PCCD::testing::Scan_model& model, double noise, std::uint
     c.spacing = model.clean_spacing;
     c.sampling_radius = model.clean_r;
     c.object = PCCD::testing::make_scan_cloud(model, {c.name, 1.0, noise, 0.0}, seed,
-                                              sharp ? sharp_options() : PCCD::Point_cloud_object_options{})
+                                              sharp ? PCCD::testing::sharp_feature_options() : PCCD::Point_cloud_object_options{})
                    .object;
     return c;
 }
