@@ -44,6 +44,8 @@ int main(int argc, char** argv)
     app.add_option("--theta-eps", object_options.bandwidth.theta_eps, "kernel weight threshold (default 1e-2)");
     app.add_option("--normal-bandwidth", object_options.normal_bandwidth,
                    "refit the oriented normals with this fraction of the kernel (default 1: no refit)");
+    app.add_option("--normal-residual-scale", object_options.normal_residual_scale,
+                   "refit the oriented normals robustly, residual scale in kernel bandwidths (default: no robust refit)");
     app.add_option("--domain-factor", object_options.domain.factor, "domain radius in k-th neighbour distances");
     app.add_option("--domain-neighbors", object_options.domain.neighbors, "k of the domain radius");
     double tolerance = 0.0;

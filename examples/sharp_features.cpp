@@ -1,7 +1,7 @@
 // Sharp edges and corners (doc/manual/surface.md, "Sharp features: the IMLS fit"): the default
 // surface of a sampled cube lies inside its corners; the sharp-feature options (the IMLS fit, a
-// narrower Gaussian within the same support, normals refitted with a narrower kernel) keep them.
-// Also refit_normals() on its own, on normals from estimate_normals().
+// narrower Gaussian within the same support, normals refitted robustly) keep them. Also
+// refit_normals() on its own, on normals from estimate_normals(): with a narrower kernel, and robust.
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Surface/Euclidean_distance.h>
 #include <PCCD/Surface/estimate_normals.h>
@@ -24,7 +24,7 @@ int main()
     PCCD::Point_cloud_object_options sharp;
     sharp.surface_fit = PCCD::Surface_fit::imls;
     sharp.bandwidth.theta_eps = 3e-5;
-    sharp.normal_bandwidth = 0.75;
+    sharp.normal_residual_scale = 0.25; // robust refit: neighbours off a point's face lose their weight
     const PCCD::Point_cloud_object<> by_default(points);
     const PCCD::Point_cloud_object<> with_edges(points, sharp);
 
@@ -39,6 +39,8 @@ int main()
     const PCCD::Euclidean_distance<> distance(cloud);
     Eigen::Matrix3Xd normals = PCCD::estimate_normals(distance, PCCD::Gaussian_weight(0.1, 0.01)).normals;
     const std::size_t refitted = PCCD::refit_normals(distance, PCCD::Gaussian_weight(0.05, 0.01), normals);
-    std::cout << "refitted " << refitted << " of " << normals.cols() << " normals\n";
+    // The same kernel made robust: residual scale 0.025 (a quarter of the bandwidth).
+    const std::size_t robust = PCCD::refit_normals(distance, PCCD::Gaussian_weight(0.1, 0.01), normals, std::nullopt, 0.025);
+    std::cout << "refitted " << refitted << " of " << normals.cols() << " normals, then " << robust << " robustly\n";
     return 0;
 }

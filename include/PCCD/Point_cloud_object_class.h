@@ -378,8 +378,9 @@ private:
     /// points kept their order) and puts the given normals in the cloud's order.
     static std::vector<std::uint32_t> checked_input(Timed_cloud& built, std::optional<Eigen::Matrix3Xd>& given_normals,
                                                     const Point_cloud_object_options& options);
-    /// When options.normal_bandwidth < 1: the oriented normals fitted again with the narrower kernel
-    /// (refit_normals()), timed as part of the normals.
+    /// When options.normal_bandwidth < 1 or options.normal_residual_scale is set: the oriented
+    /// normals fitted again with the narrower kernel and/or robustly (refit_normals()), timed as part
+    /// of the normals.
     template <class Distance>
     static void refit_stage(const Distance& distance, const Gaussian_weight& weight,
                             const Point_cloud_object_options& options, Eigen::Matrix3Xd& normals,

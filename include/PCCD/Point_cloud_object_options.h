@@ -92,6 +92,13 @@ struct Point_cloud_object_options {
     /// 0.75 (normals from half the default bandwidth) is the measured choice (doc/manual/surface.md,
     /// "Sharp features"). Must lie in (0, 1].
     double normal_bandwidth = 1.0;
+    /// When set, the stored normals are also fitted again robustly (refit_normals() with
+    /// residual_scale = normal_residual_scale times the kernel's bandwidth h): neighbours off the
+    /// plane of the face a point lies on lose their weight, so normals near sharp edges turn to
+    /// their face's instead of bending across the edge. Unset by default (no refit). Meant for
+    /// Surface_fit::imls on parts with sharp edges; 0.25 (with theta_eps 3e-5 and normal_bandwidth
+    /// 1) is the measured choice of doc/manual/surface.md, "Sharp features". Must be finite and > 0.
+    std::optional<double> normal_residual_scale = std::nullopt;
     /// The surface's domain: f is defined only within D_i of the nearest cloud point (default: D_i =
     /// the distance to the 6th nearest other point).
     Surface_domain_options domain = {};

@@ -88,6 +88,10 @@ std::vector<std::uint32_t> Point_cloud_object<K>::checked_input(Timed_cloud& bui
     if (!(std::isgreater(options.normal_bandwidth, 0.0) && std::islessequal(options.normal_bandwidth, 1.0)))
         throw Invalid_input(internal::concat("point cloud object: normal_bandwidth is ", options.normal_bandwidth,
                                              "; it must lie in (0, 1]"));
+    if (options.normal_residual_scale &&
+        !(std::isfinite(*options.normal_residual_scale) && std::isgreater(*options.normal_residual_scale, 0.0)))
+        throw Invalid_input(internal::concat("point cloud object: normal_residual_scale is ", *options.normal_residual_scale,
+                                             "; it must be finite and > 0"));
 
     // Point i of the cloud is point input_index[i] of those given; the normals given follow.
     std::vector<std::uint32_t> input_index = std::move(built.input_index);
@@ -136,10 +140,12 @@ void Point_cloud_object<K>::refit_stage(const Distance& distance, const Gaussian
                                         const Point_cloud_object_options& options, Eigen::Matrix3Xd& normals,
                                         Preprocessing_times& timings)
 {
-    if (!(options.normal_bandwidth < 1.0)) return;
+    if (!(options.normal_bandwidth < 1.0) && !options.normal_residual_scale) return;
     internal::Stage_timer stage(options, Preprocessing_stage::normals, distance.size());
-    refit_normals(distance, Gaussian_weight(weight.bandwidth() * options.normal_bandwidth, weight.threshold()), normals,
-                  options.threads);
+    const Gaussian_weight refit(weight.bandwidth() * options.normal_bandwidth, weight.threshold());
+    std::optional<double> residual_scale;
+    if (options.normal_residual_scale) residual_scale = *options.normal_residual_scale * refit.bandwidth();
+    refit_normals(distance, refit, normals, options.threads, residual_scale);
     timings.normals += stage.finish();
 }
 

@@ -26,7 +26,7 @@ class Object:
                  graph: Literal["sphere_of_influence", "knn"] = ..., sig_r: int = ..., knn_k: int = ...,
                  eta: float = ..., theta_eps: float = ..., bandwidth: Optional[float] = ...,
                  noise_factor: float = ..., surface_fit: Literal["sphere", "plane", "imls"] = ...,
-                 normal_bandwidth: float = ..., domain: bool = ...,
+                 normal_bandwidth: float = ..., normal_residual_scale: Optional[float] = ..., domain: bool = ...,
                  domain_factor: float = ..., remove_outliers: bool = ..., outlier_ratio: float = ...,
                  sampling_radius_samples: int = ..., sampling_radius_seed: int = ..., leaf_size: int = ...,
                  volume: Literal["box_and_slab", "box", "sphere"] = ..., spatial_order: bool = ...,

@@ -78,6 +78,10 @@ PCCD::Point_cloud_object_options object_options(const py::kwargs& kwargs)
          }},
         {"normal_bandwidth",
          [](auto& o, const py::handle& v, const std::string& k) { o.normal_bandwidth = option_value<double>(v, k); }},
+        {"normal_residual_scale",
+         [](auto& o, const py::handle& v, const std::string& k) {
+             o.normal_residual_scale = option_value<std::optional<double>>(v, k);
+         }},
         {"domain", [](auto& o, const py::handle& v, const std::string& k) { o.domain.enabled = option_value<bool>(v, k); }},
         {"domain_factor", [](auto& o, const py::handle& v, const std::string& k) { o.domain.factor = option_value<double>(v, k); }},
         {"remove_outliers", [](auto& o, const py::handle& v, const std::string& k) { o.outliers.remove = option_value<bool>(v, k); }},
@@ -196,10 +200,14 @@ normals : array_like, optional
         estimate (default 15; 0 disables it).
     surface_fit : {'sphere', 'plane', 'imls'}
         Local shape of the surface fit (default 'sphere'); 'imls' keeps sharp edges (with
-        normal_bandwidth=0.75 and theta_eps=3e-5 for parts with sharp edges).
+        normal_residual_scale=0.25 and theta_eps=3e-5 for parts with sharp edges).
     normal_bandwidth : float
         Refit the oriented normals with this fraction of the kernel, in (0, 1] (default 1: no
         refit).
+    normal_residual_scale : float
+        Refit the oriented normals robustly: neighbours farther than about this many kernel
+        bandwidths from a point's plane lose their weight, so normals keep to their face at
+        sharp edges; finite and > 0, None (default): no robust refit.
     domain : bool
         Restrict the surface to a domain around the points (default True).
     domain_factor : float

@@ -103,13 +103,16 @@ def test_object_rejects_bad_normals_and_options():
         pccd.Object(p, surface_fit="rimls")
     with pytest.raises(ValueError, match="normal_bandwidth"):
         pccd.Object(p, normal_bandwidth=0.0)
+    for bad in (0.0, -0.25, float("nan"), float("inf")):
+        with pytest.raises(ValueError, match="normal_residual_scale"):
+            pccd.Object(p, normal_residual_scale=bad)
 
 
 def test_the_imls_surface_keeps_a_sphere_and_answers_like_the_default():
     """The sharp-feature options build; on a sphere of radius 0.5 (no edges) the IMLS surface, like
     the default one, says a sphere 0.1 away is separate and one 0.1 inside intersects."""
     p = sphere_points(2000)
-    sharp = pccd.Object(p, surface_fit="imls", normal_bandwidth=0.75, theta_eps=3e-5, threads=1)
+    sharp = pccd.Object(p, surface_fit="imls", normal_residual_scale=0.25, theta_eps=3e-5, threads=1)
     assert sharp.theta_eps == pytest.approx(3e-5)
     for gap, expected in ((0.1, False), (-0.1, True)):
         t = pose((0, 0, 1), 0.0, (1.0 + gap, 0.0, 0.0))

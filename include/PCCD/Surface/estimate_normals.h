@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -35,6 +36,14 @@ Wls_sums sums_at_point(const Distance& distance, const Weight& weight, double su
     });
     return sums;
 }
+
+/// The robust refit of refit_normals() at cloud point i, from the plain fit `fit` of its sums
+/// `sums`: each neighbour's weight times exp(-(r / sigma_r)^2), r its distance from the last plane,
+/// robust_refit_iterations times (fewer when a refit keeps less than a tenth of the weight or is
+/// undetermined).
+template <class Distance, class Weight>
+Wls_fit robust_refit(const Distance& distance, const Weight& weight, double support, std::size_t i,
+                     double sigma_r, const Wls_sums& sums, Wls_fit fit);
 
 } // namespace internal
 
@@ -115,6 +124,10 @@ Normal_estimate estimate_normals(const Distance& distance, const Weight& weight,
     return result;
 }
 
+/// Iterations of the robust refit of refit_normals() after its first fit (the normals move by
+/// less than a degree after the fourth on the sampled cube of the tests).
+inline constexpr int robust_refit_iterations = 4;
+
 /// Fits every normal of `normals` again with the kernel `weight` (narrower than the one they were
 /// estimated with, typically) and keeps each one's sign: column i becomes the new fit at p_i, turned
 /// to agree with the old column i (a positive dot product). Where the new fit is undetermined, or
@@ -122,16 +135,31 @@ Normal_estimate estimate_normals(const Distance& distance, const Weight& weight,
 /// less across sharp edges, which the IMLS fit reads (doc/manual/surface.md, "Sharp features");
 /// the orientation, done on the wider kernel's smoother normals, carries over.
 ///
+/// With `residual_scale` (a length sigma_r), the fit is made robust (an M-estimator, iteratively
+/// reweighted): after the plane is fitted, each neighbour's weight is multiplied by
+/// exp(-(r_j / sigma_r)^2), r_j its distance from that plane, and the plane fitted again,
+/// robust_refit_iterations times. Near a sharp edge the points of the other face lie off the plane
+/// of the face p_i is on, lose their weight, and the normal turns to that face's instead of the
+/// average of the two; a refit that would keep less than a tenth of the weight keeps the last plane.
+///
 /// \tparam Distance a model of SurfaceDistance. \tparam Weight a model of SurfaceWeight.
 /// \param normals 3 x N, oriented (N = distance.size()); refitted in place.
 /// \param threads as estimate_normals(); the result does not depend on it.
-/// \throws Invalid_input as estimate_normals(), and if `normals` does not have N columns.
+/// \param residual_scale sigma_r of the robust fit (same unit as the points); unset: the plain fit.
+/// \throws Invalid_input as estimate_normals(), if `normals` does not have N columns, or if
+///         `residual_scale` is set and not finite and > 0.
 /// Returns the number of normals refitted. Complexity: N neighbour enumerations within the new
-/// support. Thread safety: reads its arguments only, writes `normals`.
+/// support (times 1 + robust_refit_iterations passes over the neighbours with `residual_scale`).
+/// Thread safety: reads its arguments only, writes `normals`.
 template <SurfaceDistance Distance, SurfaceWeight Weight>
 std::size_t refit_normals(const Distance& distance, const Weight& weight, Eigen::Matrix3Xd& normals,
-                          std::optional<unsigned> threads = std::nullopt)
+                          std::optional<unsigned> threads = std::nullopt,
+                          std::optional<double> residual_scale = std::nullopt)
 {
+    // A quiet comparison: a NaN is refused, never trapped.
+    if (residual_scale && !(std::isfinite(*residual_scale) && std::isgreater(*residual_scale, 0.0)))
+        throw Invalid_input(internal::concat("refit_normals: residual_scale is ", *residual_scale,
+                                             "; it must be finite and > 0"));
     const double support = double(weight.support_radius());
     if (support > double(distance.max_radius()) * (1.0 + 1e-12))
         throw Invalid_input(internal::concat("refit_normals: the kernel's support radius ", support,
@@ -149,9 +177,10 @@ std::size_t refit_normals(const Distance& distance, const Weight& weight, Eigen:
                 if (old.isZero(0.0)) continue;
                 const internal::Wls_sums sums = internal::sums_at_point(distance, weight, support, i);
                 if (sums.count == 0 || !(sums.weight > 0.0)) continue;
-                const internal::Wls_fit fit =
-                    internal::finish_fit(distance.position(static_cast<std::uint32_t>(i)), sums);
+                const Eigen::Vector3d x = distance.position(static_cast<std::uint32_t>(i));
+                internal::Wls_fit fit = internal::finish_fit(x, sums);
                 if (!fit.determined) continue;
+                if (residual_scale) fit = internal::robust_refit(distance, weight, support, i, *residual_scale, sums, fit);
                 normals.col(Eigen::Index(i)) = fit.normal.dot(old) < 0.0 ? Eigen::Vector3d(-fit.normal) : fit.normal;
                 refitted[i] = 1;
             }
@@ -159,5 +188,37 @@ std::size_t refit_normals(const Distance& distance, const Weight& weight, Eigen:
     });
     return std::size_t(std::count(refitted.begin(), refitted.end(), std::uint8_t(1)));
 }
+
+namespace internal {
+
+template <class Distance, class Weight>
+Wls_fit robust_refit(const Distance& distance, const Weight& weight, double support, std::size_t i, double sigma_r,
+                     const Wls_sums& sums, Wls_fit fit)
+{
+    const auto index = static_cast<std::uint32_t>(i);
+    const Eigen::Vector3d x = distance.position(index);
+    // The neighbours' offsets and weights, read once (one buffer per thread, reused).
+    thread_local std::vector<std::pair<Eigen::Vector3d, double>> neighbors;
+    neighbors.clear();
+    distance.for_each_neighbor_of_point(index, support, [&](std::uint32_t j, double d) {
+        neighbors.emplace_back(distance.position(j) - x, double(weight(d)));
+    });
+    const double inv = 1.0 / (sigma_r * sigma_r);
+    for (int iteration = 0; iteration < robust_refit_iterations; ++iteration) {
+        const Eigen::Vector3d centre = fit.centroid - x;
+        Wls_sums again;
+        for (const auto& [offset, w] : neighbors) {
+            const double r = fit.normal.dot(offset - centre);
+            again.add(offset, w * std::exp(-r * r * inv));
+        }
+        if (!(again.weight >= 0.1 * sums.weight)) break;
+        const Wls_fit next = finish_fit(x, again);
+        if (!next.determined) break;
+        fit = next;
+    }
+    return fit;
+}
+
+} // namespace internal
 
 } // namespace PCCD
