@@ -27,6 +27,9 @@
 // surfaces reach out by up to a spacing). Printed as targets, not asserted: the time error within
 // 1 s on >= 99 % of the contacting motions, 0 false contacts (doc/benchmarks.md).
 //
+// `--sharp` builds every cloud with the sharp-feature options of doc/manual/surface.md ("Sharp
+// features") instead of the defaults (a measurement, not run by ctest; same motions and seeds).
+//
 // A plain program (no Catch2) so that missing data is reported to ctest as skipped (exit code 77).
 // Release: 3 scanned models and 4 CAD parts, 40 motions of each kind per cloud; Debug and sanitizer
 // builds run a smoke version (elephant and anchor, 6 motions of each kind).
@@ -37,6 +40,7 @@
 #include <PCCD/Exact/mesh_intersection.h>
 #include <PCCD/testing/pose_generator.h>
 #include <PCCD/testing/scan_validation.h>
+#include <PCCD/testing/sharp_feature_options.h>
 
 #include <algorithm>
 #include <cmath>
@@ -250,7 +254,7 @@ void evaluate(const PCCD::testing::Scan_model& model, const std::string& cloud_n
 
 void print_header()
 {
-    std::printf("%-14s %-16s %-9s %4s %5s %5s %18s %7s %7s %5s %5s %5s %6s %8s %8s %8s\n", "model", "cloud", "motion", "n",
+    std::printf("%-14s %-23s %-9s %4s %5s %5s %18s %7s %7s %5s %5s %5s %6s %8s %8s %8s\n", "model", "cloud", "motion", "n",
                 "exact", "pccd", "err<=1s", "p99/s", "gap/s", "tunn", "false", "late", "d30mis", "ccd us", "30 us", "300 us");
 }
 
@@ -263,7 +267,7 @@ void print_row(const Row& r)
     std::vector<double> g = r.gaps_at_t;
     std::sort(g.begin(), g.end());
     const double gap99 = g.empty() ? std::nan("") : PCCD::testing::sorted_quantile(g, 99);
-    std::printf("%-14s %-16s %-9s %4zu %5zu %5zu %18s %7.2f %7.2f %5zu %5zu %5zu %6zu %8.0f %8.0f %8.0f\n", r.model.c_str(),
+    std::printf("%-14s %-23s %-9s %4zu %5zu %5zu %18s %7.2f %7.2f %5zu %5zu %5zu %6zu %8.0f %8.0f %8.0f\n", r.model.c_str(),
                 r.cloud.c_str(), r.kind.c_str(), r.motions, r.exact_contacts, r.pccd_contacts,
                 PCCD::testing::percent(r.within_one, r.exact_contacts).c_str(), p99, gap99, r.tunnelled, r.false_contacts,
                 r.late, r.discrete_exact_missed, r.ccd_us / n, r.d30_us / n, r.d300_us / n);
@@ -271,8 +275,15 @@ void print_row(const Row& r)
 
 } // namespace
 
-int main()
+int main(int argc, char** argv)
 {
+    const bool sharp = argc == 2 && std::string(argv[1]) == "--sharp";
+    if (argc > 2 || (argc == 2 && !sharp)) {
+        std::fprintf(stderr, "usage: %s [--sharp]\n", argv[0]);
+        return 2;
+    }
+    const PCCD::Point_cloud_object_options object_options =
+        sharp ? PCCD::testing::sharp_feature_options() : PCCD::Point_cloud_object_options{};
     const std::string dir = PCCD_DATA_DIR;
     if (dir.empty() || !std::ifstream(dir + "/" + scanned_models.front())) {
         std::printf("the meshes of libcgal-demo are not in PCCD_DATA_DIR (\"%s\"): contact time accuracy skipped\n", dir.c_str());
@@ -288,8 +299,9 @@ int main()
         const PCCD::testing::Scan_model model = PCCD::testing::load_scan_model(dir, file, area_points, 2026);
         const std::vector<Motion_case> motions = draw_motions(seed++);
         for (const double noise : {0.0, 0.3}) {
-            const std::string name = noise > 0.0 ? "area, noise 0.3" : "area";
-            const auto cloud = PCCD::testing::make_scan_cloud(model, {name, 1.0, noise, 0.0}, noise > 0.0 ? 2027 : 2026);
+            const std::string name = std::string(noise > 0.0 ? "area, noise 0.3" : "area") + (sharp ? ", sharp" : "");
+            const auto cloud =
+                PCCD::testing::make_scan_cloud(model, {name, 1.0, noise, 0.0}, noise > 0.0 ? 2027 : 2026, object_options);
             const std::size_t first = rows.size();
             evaluate(model, name, *cloud.object, motions, rows);
             for (std::size_t i = first; i < rows.size(); ++i) print_row(rows[i]);
