@@ -89,6 +89,34 @@ PCCD::Triangle_mesh_sample cube_sample(std::uint64_t seed)
     return PCCD::sample_triangle_mesh(cube.vertices, cube.triangles, 6000, engine);
 }
 
+/// Distance from a point of the cube [-1, 1]^3's surface to its nearest edge: the second largest
+/// coordinate's gap to 1.
+double cube_edge_distance(const Eigen::Vector3d& p)
+{
+    const Eigen::Vector3d a = p.cwiseAbs();
+    std::array<double, 3> c{a.x(), a.y(), a.z()};
+    std::sort(c.begin(), c.end());
+    return 1.0 - c[1];
+}
+
+/// The angle between column i of `normals` and of `exact` (unit columns), in radians.
+double column_angle(const Eigen::Matrix3Xd& normals, const Eigen::Matrix3Xd& exact, Eigen::Index i)
+{
+    return std::acos(std::clamp(normals.col(i).dot(exact.col(i)), -1.0, 1.0));
+}
+
+/// The normals estimate_normals() gives the points of `sample` with `weight`, each turned to agree
+/// with the exact normal (the orientation taken as solved).
+template <class Sample>
+Eigen::Matrix3Xd oriented_estimate(const Sample& sample, const PCCD::Euclidean_distance<>& distance,
+                                   const PCCD::Gaussian_weight& weight)
+{
+    Eigen::Matrix3Xd normals = PCCD::estimate_normals(distance, weight).normals;
+    for (Eigen::Index i = 0; i < normals.cols(); ++i)
+        if (normals.col(i).dot(sample.normals.col(i)) < 0.0) normals.col(i) *= -1.0;
+    return normals;
+}
+
 /// The exact signed distance to the cube [-1, 1]^3.
 double cube_distance(const Eigen::Vector3d& x)
 {
@@ -368,10 +396,7 @@ TEST_CASE("refit_normals sharpens normals across edges and keeps their orientati
     const double spacing = cloud.mean_spacing();
     const PCCD::Euclidean_distance<> distance(cloud);
     const PCCD::Gaussian_weight wide(0.1, 0.01), narrow(0.05, 0.01);
-    PCCD::Normal_estimate estimate = PCCD::estimate_normals(distance, wide);
-    Eigen::Matrix3Xd normals = estimate.normals;
-    for (Eigen::Index i = 0; i < normals.cols(); ++i)
-        if (normals.col(i).dot(sample.normals.col(i)) < 0.0) normals.col(i) *= -1.0; // oriented
+    Eigen::Matrix3Xd normals = oriented_estimate(sample, distance, wide);
     const Eigen::Matrix3Xd before = normals;
     const std::size_t refitted = PCCD::refit_normals(distance, narrow, normals);
     CHECK(refitted > std::size_t(normals.cols()) * 9 / 10);
@@ -379,13 +404,9 @@ TEST_CASE("refit_normals sharpens normals across edges and keeps their orientati
     for (Eigen::Index i = 0; i < normals.cols(); ++i) {
         if (before.col(i).isZero(0.0)) continue;
         CHECK(normals.col(i).dot(before.col(i)) > 0.0);
-        const Eigen::Vector3d a = sample.points.col(i).cwiseAbs();
-        // Distance to the nearest edge: the second largest coordinate's gap to 1.
-        std::array<double, 3> c{a.x(), a.y(), a.z()};
-        std::sort(c.begin(), c.end());
-        if (1.0 - c[1] > 3.0 * spacing) continue;
-        angle_before.push_back(std::acos(std::clamp(before.col(i).dot(sample.normals.col(i)), -1.0, 1.0)));
-        angle_after.push_back(std::acos(std::clamp(normals.col(i).dot(sample.normals.col(i)), -1.0, 1.0)));
+        if (cube_edge_distance(sample.points.col(i)) > 3.0 * spacing) continue;
+        angle_before.push_back(column_angle(before, sample.normals, i));
+        angle_after.push_back(column_angle(normals, sample.normals, i));
     }
     REQUIRE(angle_before.size() > 100);
     INFO("median angle to the face normal near edges: before " << upper_median(angle_before) << ", after "
@@ -410,9 +431,7 @@ TEST_CASE("the robust refit turns the normals near edges to their own face", "[s
     const double spacing = cloud.mean_spacing();
     const PCCD::Euclidean_distance<> distance(cloud);
     const PCCD::Gaussian_weight wide(0.1, 0.01), narrow(0.05, 0.01);
-    Eigen::Matrix3Xd before = PCCD::estimate_normals(distance, wide).normals;
-    for (Eigen::Index i = 0; i < before.cols(); ++i)
-        if (before.col(i).dot(sample.normals.col(i)) < 0.0) before.col(i) *= -1.0; // oriented
+    const Eigen::Matrix3Xd before = oriented_estimate(sample, distance, wide);
     Eigen::Matrix3Xd robust = before, plain_narrow = before;
     const std::size_t refitted = PCCD::refit_normals(distance, wide, robust, 1u, 0.025);
     PCCD::refit_normals(distance, narrow, plain_narrow, 1u);
@@ -423,16 +442,11 @@ TEST_CASE("the robust refit turns the normals near edges to their own face", "[s
     CHECK(two_threads == robust);
 
     std::vector<double> near_before, near_narrow, near_robust, far_robust;
-    const auto angle = [&](const Eigen::Matrix3Xd& n, Eigen::Index i) {
-        return std::acos(std::clamp(n.col(i).dot(sample.normals.col(i)), -1.0, 1.0));
-    };
+    const auto angle = [&](const Eigen::Matrix3Xd& n, Eigen::Index i) { return column_angle(n, sample.normals, i); };
     for (Eigen::Index i = 0; i < robust.cols(); ++i) {
         if (before.col(i).isZero(0.0)) continue;
         CHECK(robust.col(i).dot(before.col(i)) > 0.0);
-        const Eigen::Vector3d a = sample.points.col(i).cwiseAbs();
-        std::array<double, 3> c{a.x(), a.y(), a.z()};
-        std::sort(c.begin(), c.end());
-        const double to_edge = 1.0 - c[1];
+        const double to_edge = cube_edge_distance(sample.points.col(i));
         if (to_edge <= 3.0 * spacing) {
             near_before.push_back(angle(before, i));
             near_narrow.push_back(angle(plain_narrow, i));
