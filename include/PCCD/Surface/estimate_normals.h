@@ -124,8 +124,8 @@ Normal_estimate estimate_normals(const Distance& distance, const Weight& weight,
     return result;
 }
 
-/// Iterations of the robust refit of refit_normals() after its first fit (the normals move by
-/// less than a degree after the fourth on the sampled cube of the tests).
+/// Iterations of the robust refit of refit_normals() after its first fit: the number every figure
+/// of doc/manual/surface.md ("Sharp features") was measured with; other counts were not measured.
 inline constexpr int robust_refit_iterations = 4;
 
 /// Fits every normal of `normals` again with the kernel `weight` (narrower than the one they were
