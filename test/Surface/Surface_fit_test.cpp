@@ -13,6 +13,7 @@
 #include <PCCD/Surface/estimate_normals.h>
 #include <PCCD/sample_triangle_mesh.h>
 
+#include <PCCD/testing/sharp_feature_options.h>
 #include <PCCD/testing/statistics.h>
 
 #include <catch2/catch.hpp>
@@ -116,6 +117,17 @@ Eigen::Matrix3Xd oriented_estimate(const Sample& sample, const PCCD::Euclidean_d
         if (normals.col(i).dot(sample.normals.col(i)) < 0.0) normals.col(i) *= -1.0;
     return normals;
 }
+
+/// What the two refit tests start from: a cube sample (seed 91), its cloud and Euclidean distance,
+/// and the wide (support about 7 spacings) and narrow kernels.
+struct Refit_setup {
+    PCCD::Triangle_mesh_sample sample = cube_sample(91);
+    PCCD::Point_cloud<> cloud{sample.points};
+    double spacing = cloud.mean_spacing();
+    PCCD::Euclidean_distance<> distance{cloud};
+    PCCD::Gaussian_weight wide{0.1, 0.01};
+    PCCD::Gaussian_weight narrow{0.05, 0.01};
+};
 
 /// The exact signed distance to the cube [-1, 1]^3.
 double cube_distance(const Eigen::Vector3d& x)
@@ -376,8 +388,7 @@ TEST_CASE("on a sampled cube the IMLS fit keeps the corners and edges the other 
     };
     const double default_median = object_median(by_default), sharp_median = object_median(sharp);
     // The sharp-feature options as documented: normals refitted robustly instead of narrower.
-    const PCCD::Point_cloud_object<> robust(
-        points, {}, {.bandwidth = {.theta_eps = 3e-5}, .surface_fit = PCCD::Surface_fit::imls, .normal_residual_scale = 0.25});
+    const PCCD::Point_cloud_object<> robust(points, {}, PCCD::testing::sharp_feature_options());
     const double robust_median = object_median(robust);
     INFO("objects: median |f| at corners and edges, sphere " << default_median << ", imls " << sharp_median
                                                                << ", imls with robust normals " << robust_median);
@@ -391,11 +402,8 @@ TEST_CASE("refit_normals sharpens normals across edges and keeps their orientati
     // spacings) bend across the edges; refitted with half its bandwidth and support they lie closer
     // to the exact face normals at the points within 3 spacings of an edge (measured median angle
     // 0.44 rad before, 0.21 after; asserted: below 0.7 times), and each keeps its sign.
-    const auto sample = cube_sample(91);
-    const PCCD::Point_cloud<> cloud(sample.points);
-    const double spacing = cloud.mean_spacing();
-    const PCCD::Euclidean_distance<> distance(cloud);
-    const PCCD::Gaussian_weight wide(0.1, 0.01), narrow(0.05, 0.01);
+    const Refit_setup setup;
+    const auto& [sample, cloud, spacing, distance, wide, narrow] = setup;
     Eigen::Matrix3Xd normals = oriented_estimate(sample, distance, wide);
     const Eigen::Matrix3Xd before = normals;
     const std::size_t refitted = PCCD::refit_normals(distance, narrow, normals);
@@ -426,11 +434,8 @@ TEST_CASE("the robust refit turns the normals near edges to their own face", "[s
     // exact face normal falls well below the plain fit's and below the narrow kernel's (measured
     // 0.10 rad against 0.44 and 0.21; asserted: below half the plain fit's, below the narrow's); on
     // the faces away from the edges the normals stay exact; every sign is kept.
-    const auto sample = cube_sample(91);
-    const PCCD::Point_cloud<> cloud(sample.points);
-    const double spacing = cloud.mean_spacing();
-    const PCCD::Euclidean_distance<> distance(cloud);
-    const PCCD::Gaussian_weight wide(0.1, 0.01), narrow(0.05, 0.01);
+    const Refit_setup setup;
+    const auto& [sample, cloud, spacing, distance, wide, narrow] = setup;
     const Eigen::Matrix3Xd before = oriented_estimate(sample, distance, wide);
     Eigen::Matrix3Xd robust = before, plain_narrow = before;
     const std::size_t refitted = PCCD::refit_normals(distance, wide, robust, 1u, 0.025);
