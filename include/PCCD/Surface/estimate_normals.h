@@ -22,6 +22,10 @@
 
 namespace PCCD {
 
+/// Iterations of the robust refit of refit_normals() after its first fit: the number every figure
+/// of doc/manual/surface.md ("Sharp features") was measured with; other counts were not measured.
+inline constexpr int robust_refit_iterations = 4;
+
 namespace internal {
 
 /// The WLS sums of cloud point i's weighted neighbours within `support` (offsets from p_i).
@@ -37,13 +41,28 @@ Wls_sums sums_at_point(const Distance& distance, const Weight& weight, double su
     return sums;
 }
 
-/// The robust refit of refit_normals() at cloud point i, from the plain fit `fit` of its sums
-/// `sums`: each neighbour's weight times exp(-(r / sigma_r)^2), r its distance from the last plane,
-/// robust_refit_iterations times (fewer when a refit keeps less than a tenth of the weight or is
-/// undetermined).
-template <class Distance, class Weight>
-Wls_fit robust_refit(const Distance& distance, const Weight& weight, double support, std::size_t i,
-                     double sigma_r, const Wls_sums& sums, Wls_fit fit);
+/// The robust refit of refit_normals() at cloud point x from its neighbours (offsets from x and
+/// weights) and their plain fit `fit` with total weight `weight_sum`: each neighbour's weight times
+/// exp(-(r / sigma_r)^2), r its distance from the last plane, robust_refit_iterations times (fewer
+/// when a refit keeps less than a tenth of the weight or is undetermined).
+inline Wls_fit robust_refit(const Eigen::Vector3d& x, const std::vector<std::pair<Eigen::Vector3d, double>>& neighbors,
+                            double weight_sum, double sigma_r, Wls_fit fit)
+{
+    const double inv = 1.0 / (sigma_r * sigma_r);
+    for (int iteration = 0; iteration < robust_refit_iterations; ++iteration) {
+        const Eigen::Vector3d centre = fit.centroid - x;
+        Wls_sums again;
+        for (const auto& [offset, w] : neighbors) {
+            const double r = fit.normal.dot(offset - centre);
+            again.add(offset, w * std::exp(-r * r * inv));
+        }
+        if (!(again.weight >= 0.1 * weight_sum)) break;
+        const Wls_fit next = finish_fit(x, again);
+        if (!next.determined) break;
+        fit = next;
+    }
+    return fit;
+}
 
 } // namespace internal
 
@@ -124,10 +143,6 @@ Normal_estimate estimate_normals(const Distance& distance, const Weight& weight,
     return result;
 }
 
-/// Iterations of the robust refit of refit_normals() after its first fit: the number every figure
-/// of doc/manual/surface.md ("Sharp features") was measured with; other counts were not measured.
-inline constexpr int robust_refit_iterations = 4;
-
 /// Fits every normal of `normals` again with the kernel `weight` (narrower than the one they were
 /// estimated with, typically) and keeps each one's sign: column i becomes the new fit at p_i, turned
 /// to agree with the old column i (a positive dot product). Where the new fit is undetermined, or
@@ -170,17 +185,30 @@ std::size_t refit_normals(const Distance& distance, const Weight& weight, Eigen:
                                              " points"));
     const std::size_t n = distance.size();
     std::vector<std::uint8_t> refitted(n, 0);
+    // The robust refit reads each point's neighbours again: read them once into this buffer (one per
+    // thread, reused) and sum them from it, in the same order as sums_at_point().
+    thread_local std::vector<std::pair<Eigen::Vector3d, double>> neighbors;
     internal::with_threads(threads, [&] {
         internal::parallel_for_ranges(n, 256, [&](std::size_t begin, std::size_t end) {
             for (std::size_t i = begin; i < end; ++i) {
                 const auto old = normals.col(Eigen::Index(i));
                 if (old.isZero(0.0)) continue;
-                const internal::Wls_sums sums = internal::sums_at_point(distance, weight, support, i);
+                const auto index = static_cast<std::uint32_t>(i);
+                const Eigen::Vector3d x = distance.position(index);
+                internal::Wls_sums sums;
+                if (residual_scale) {
+                    neighbors.clear();
+                    distance.for_each_neighbor_of_point(index, support, [&](std::uint32_t j, double d) {
+                        neighbors.emplace_back(distance.position(j) - x, double(weight(d)));
+                        sums.add(neighbors.back().first, neighbors.back().second);
+                    });
+                } else {
+                    sums = internal::sums_at_point(distance, weight, support, i);
+                }
                 if (sums.count == 0 || !(sums.weight > 0.0)) continue;
-                const Eigen::Vector3d x = distance.position(static_cast<std::uint32_t>(i));
                 internal::Wls_fit fit = internal::finish_fit(x, sums);
                 if (!fit.determined) continue;
-                if (residual_scale) fit = internal::robust_refit(distance, weight, support, i, *residual_scale, sums, fit);
+                if (residual_scale) fit = internal::robust_refit(x, neighbors, sums.weight, *residual_scale, fit);
                 normals.col(Eigen::Index(i)) = fit.normal.dot(old) < 0.0 ? Eigen::Vector3d(-fit.normal) : fit.normal;
                 refitted[i] = 1;
             }
@@ -188,37 +216,5 @@ std::size_t refit_normals(const Distance& distance, const Weight& weight, Eigen:
     });
     return std::size_t(std::count(refitted.begin(), refitted.end(), std::uint8_t(1)));
 }
-
-namespace internal {
-
-template <class Distance, class Weight>
-Wls_fit robust_refit(const Distance& distance, const Weight& weight, double support, std::size_t i, double sigma_r,
-                     const Wls_sums& sums, Wls_fit fit)
-{
-    const auto index = static_cast<std::uint32_t>(i);
-    const Eigen::Vector3d x = distance.position(index);
-    // The neighbours' offsets and weights, read once (one buffer per thread, reused).
-    thread_local std::vector<std::pair<Eigen::Vector3d, double>> neighbors;
-    neighbors.clear();
-    distance.for_each_neighbor_of_point(index, support, [&](std::uint32_t j, double d) {
-        neighbors.emplace_back(distance.position(j) - x, double(weight(d)));
-    });
-    const double inv = 1.0 / (sigma_r * sigma_r);
-    for (int iteration = 0; iteration < robust_refit_iterations; ++iteration) {
-        const Eigen::Vector3d centre = fit.centroid - x;
-        Wls_sums again;
-        for (const auto& [offset, w] : neighbors) {
-            const double r = fit.normal.dot(offset - centre);
-            again.add(offset, w * std::exp(-r * r * inv));
-        }
-        if (!(again.weight >= 0.1 * sums.weight)) break;
-        const Wls_fit next = finish_fit(x, again);
-        if (!next.determined) break;
-        fit = next;
-    }
-    return fit;
-}
-
-} // namespace internal
 
 } // namespace PCCD
