@@ -2,7 +2,10 @@
 // truth: spheres meeting along a line and along a screw (first contact time in closed form), a small
 // sphere shot through a thin plate faster than discrete steps can see, near misses; and, on random
 // motions of torus and sphere clouds (fixed seeds), against dense discrete do_intersect checks: no
-// contact that the dense checks find comes before t_low, and no_contact only where they find none.
+// contact that the dense checks find comes before t_low, and no_contact only where they find none,
+// for the default fit and for the IMLS fit of the sharp-feature options. The advancement's lower
+// bound (surface_gap.h) against brute force over all point pairs, and against the distances between
+// points of the two zero sets found by projection (it must stay below every one of them).
 #include <PCCD/Continuous/Contact_time_options.h>
 #include <PCCD/Continuous/Rigid_motion.h>
 #include <PCCD/Continuous/time_of_contact.h>
@@ -10,8 +13,10 @@
 #include <catch2/catch.hpp>
 
 #include <PCCD/Point_cloud_object.h>
+#include <PCCD/Proximity/internal/surface_gap.h>
 #include <PCCD/Random.h>
 #include <PCCD/testing/pose_generator.h>
+#include <PCCD/testing/sharp_feature_options.h>
 
 #include <cmath>
 #include <limits>
@@ -54,6 +59,37 @@ const Object& torus()
         return Object(pccd_test::columns(s.points));
     }();
     return t;
+}
+
+// The same clouds as torus() and sphere(1.0), with the IMLS fit of the sharp-feature options.
+const Object& imls_torus()
+{
+    static const Object t = [] {
+        const auto s = pccd_test::sample_shape(pccd_test::test_torus(), 3000, 0.0, 44);
+        return Object(pccd_test::columns(s.points), PCCD::testing::sharp_feature_options());
+    }();
+    return t;
+}
+
+const Object& imls_sphere()
+{
+    static const Object u = [] {
+        const auto s = pccd_test::sample_shape(pccd_test::unit_sphere(), 3000, 0.0, 41);
+        return Object(pccd_test::columns(s.points), PCCD::testing::sharp_feature_options());
+    }();
+    return u;
+}
+
+// A cloud without a surface domain: its surface can reach as far as the kernel's support.
+const Object& domainless_sphere()
+{
+    static const Object u = [] {
+        const auto s = pccd_test::sample_shape(pccd_test::unit_sphere(), 1500, 0.0, 45);
+        PCCD::Point_cloud_object_options o;
+        o.domain.enabled = false;
+        return Object(pccd_test::columns(s.points), o);
+    }();
+    return u;
 }
 
 Rigid_transform_3<double> at(const Eigen::Vector3d& t) { return Rigid_transform_3<double>(Eigen::Matrix3d::Identity(), t); }
@@ -185,10 +221,11 @@ TEST_CASE("time_of_contact: a small fast sphere through a thin plate does not tu
     CHECK(discrete_misses >= 10); // the case really is one discrete checks miss
 }
 
-TEST_CASE("time_of_contact: against dense discrete checks on random motions", "[continuous]")
+namespace {
+
+/// 30 random motions of `a` and `b` (seed 2024) against 1,000 discrete checks each.
+void check_against_dense_checks(const Object& a, const Object& b)
 {
-    const Object& a = torus();
-    const Object& b = sphere(1.0);
     PCCD::Random_engine engine(2024);
     int contacts = 0, misses = 0;
     for (int k = 0; k < 30; ++k) {
@@ -224,6 +261,125 @@ TEST_CASE("time_of_contact: against dense discrete checks on random motions", "[
     INFO("contacts " << contacts);
     CHECK(contacts >= 8);
     CHECK(misses == 0);
+}
+
+} // namespace
+
+TEST_CASE("time_of_contact: against dense discrete checks on random motions", "[continuous]")
+{
+    SECTION("default fit") { check_against_dense_checks(torus(), sphere(1.0)); }
+    SECTION("IMLS fit (sharp-feature options)") { check_against_dense_checks(imls_torus(), imls_sphere()); }
+}
+
+namespace {
+
+/// min over point pairs of |T p - q| - reach(p) - reach(q), straight from the clouds' positions and
+/// domain radii (reach: the domain radius capped by the support radius; without a domain, the
+/// support radius).
+double brute_force_gap(const Object& a, const Rigid_transform_3<double>& a_to_b, const Object& b)
+{
+    const auto reach = [](const Object& o, std::size_t i) {
+        const double h = o.surface().support_radius();
+        return o.domain_radii().size() == 0 ? h : std::min(o.domain_radii()(Eigen::Index(i)), h);
+    };
+    double gap = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        const Eigen::Vector3d p = a_to_b.transform_point(Eigen::Vector3d(a.cloud().position(i)));
+        const double ra = reach(a, i);
+        for (std::size_t j = 0; j < b.size(); ++j)
+            gap = std::min(gap, (p - Eigen::Vector3d(b.cloud().position(j))).norm() - ra - reach(b, j));
+    }
+    return gap;
+}
+
+/// Points of the zero set of o's surface (local frame): cloud points pushed off by up to 1.5
+/// sampling radii in random directions, then projected by Newton steps x -= f(x) n(x) until |f| <
+/// 1e-9; those whose projection leaves the domain are dropped.
+std::vector<Eigen::Vector3d> zero_set_points(const Object& o, std::size_t count, std::uint64_t seed)
+{
+    PCCD::Random_engine engine(seed);
+    std::vector<Eigen::Vector3d> out;
+    for (std::size_t k = 0; k < count; ++k) {
+        const std::size_t i = std::size_t(PCCD::uniform_real(engine, 0.0, double(o.size()))) % o.size();
+        Eigen::Vector3d d(PCCD::standard_normal(engine), PCCD::standard_normal(engine), PCCD::standard_normal(engine));
+        Eigen::Vector3d x = Eigen::Vector3d(o.cloud().position(i)) + PCCD::uniform_real(engine, 0.0, 1.5 * o.sampling_radius()) * d.normalized();
+        for (int step = 0; step < 40; ++step) {
+            const PCCD::Surface_evaluation e = o.surface().evaluate(x);
+            if (!e.defined()) break;
+            if (std::abs(e.value) < 1e-9) {
+                out.push_back(x);
+                break;
+            }
+            x -= e.value * e.normal;
+        }
+    }
+    return out;
+}
+
+} // namespace
+
+TEST_CASE("time_of_contact's lower bound: exact over the point pairs, and below every distance between the surfaces",
+          "[continuous]")
+{
+    struct Pair {
+        const char* name;
+        const Object& a;
+        const Object& b;
+    };
+    const Pair pairs[] = {{"default fit", torus(), sphere(1.0)},
+                          {"IMLS fit", imls_torus(), imls_sphere()},
+                          {"no domain", torus(), domainless_sphere()}};
+    for (const Pair& pair : pairs) {
+        SECTION(pair.name)
+        {
+            const Object& a = pair.a;
+            const Object& b = pair.b;
+            const auto reach_a = PCCD::internal::surface_reach(a.hierarchy(), a.surface().support_radius());
+            const auto reach_b = PCCD::internal::surface_reach(b.hierarchy(), b.surface().support_radius());
+            const std::vector<Eigen::Vector3d> za = zero_set_points(a, 2000, 11), zb = zero_set_points(b, 2000, 12);
+            REQUIRE(za.size() > 1300);
+            REQUIRE(zb.size() > 1300);
+            PCCD::Random_engine engine(77);
+            int close = 0;
+            for (int k = 0; k < 8; ++k) {
+                // B's centre 1.5 to 3.3 from the torus's centre: from deep overlap to a few spacings apart.
+                Eigen::Vector3d c(PCCD::standard_normal(engine), PCCD::standard_normal(engine), PCCD::standard_normal(engine));
+                c = PCCD::uniform_real(engine, 1.5, 3.3) * c.normalized();
+                const Rigid_transform_3<double> pose_b(PCCD::testing::uniform_random_rotation(engine), c);
+                const Rigid_transform_3<double> pose_a(PCCD::testing::uniform_random_rotation(engine), Eigen::Vector3d::Zero());
+                const Rigid_transform_3<double> a_to_b = pose_b.inverse() * pose_a;
+                const double truth = brute_force_gap(a, a_to_b, b);
+                const double inf = std::numeric_limits<double>::infinity();
+                // Unlimited walk: exactly the brute-force minimum.
+                const auto full = PCCD::internal::surface_gap_lower_bound(a.hierarchy(), b.hierarchy(), a_to_b, reach_a, reach_b,
+                                                                          inf, -inf, std::numeric_limits<std::size_t>::max());
+                CHECK_FALSE(full.below);
+                CHECK(full.lower == Approx(truth).margin(1e-12));
+                // Under budgets: a lower bound still.
+                for (const std::size_t budget : {std::size_t(1), std::size_t(8), std::size_t(64)}) {
+                    const auto cut = PCCD::internal::surface_gap_lower_bound(a.hierarchy(), b.hierarchy(), a_to_b, reach_a, reach_b,
+                                                                             inf, -inf, budget);
+                    CHECK(cut.lower <= truth + 1e-12);
+                }
+                // With a threshold above the truth, the walk stops at a pair below it.
+                const auto early = PCCD::internal::surface_gap_lower_bound(a.hierarchy(), b.hierarchy(), a_to_b, reach_a, reach_b, inf,
+                                                                           truth + 0.1, std::numeric_limits<std::size_t>::max());
+                CHECK(early.below);
+                CHECK(early.lower < truth + 0.1);
+                CHECK(early.lower >= truth - 1e-12);
+                // Certified: no two points of the zero sets are closer than the bound.
+                double sampled = inf;
+                for (const Eigen::Vector3d& x : za) {
+                    const Eigen::Vector3d y = a_to_b.transform_point(x);
+                    for (const Eigen::Vector3d& z : zb) sampled = std::min(sampled, (y - z).norm());
+                }
+                INFO("pose " << k << ": bound " << truth << ", closest sampled surface points " << sampled);
+                CHECK(truth <= sampled);
+                close += sampled < 0.2;
+            }
+            CHECK(close >= 3); // some poses put the surfaces in or near contact, where the bound matters
+        }
+    }
 }
 
 TEST_CASE("time_of_contact: bad options", "[continuous]")

@@ -1,6 +1,6 @@
 // PCCD/Continuous/time_of_contact.h -- time_of_contact(), continuous collision detection between
 // two point-cloud objects moving rigidly over t in [0, 1]: conservative advancement on a certified
-// lower bound of the surfaces' distance (the closest-pair walk of the proximity queries), contact
+// lower bound of the surfaces' distance (point pairs minus their reaches, Proximity/internal/surface_gap.h), contact
 // checks at short sub-steps where that bound cannot exclude contact, and bisection of the first
 // contact time (doc/algorithms.md, "Continuous collision"; doc/manual/continuous.md).
 #pragma once
@@ -18,6 +18,7 @@
 #include <PCCD/Error.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Proximity/distance.h>
+#include <PCCD/Proximity/internal/surface_gap.h>
 #include <PCCD/Rigid_transform_3.h>
 #include <PCCD/concepts/ProximityObject.h>
 #include <PCCD/concepts/RigidMotion.h>
@@ -47,8 +48,9 @@ public:
                   double(motion_b.max_point_speed(rb.center(), 0.5 * rb.diagonal().norm()));
         if (!(std::isfinite(m_speed) && m_speed >= 0.0))
             throw Invalid_input(concat("time_of_contact: the motions' speed bound ", m_speed, " is not finite"));
+        m_reach_a = internal::surface_reach(a.hierarchy(), double(a.surface().support_radius()));
+        m_reach_b = internal::surface_reach(b.hierarchy(), double(b.surface().support_radius()));
         const double r_a = double(a.sampling_radius()), r_b = double(b.sampling_radius());
-        m_rho = r_a + 2.0 * double(a.noise_estimate()) + r_b + 2.0 * double(b.noise_estimate());
         const double r_min = std::min(r_a, r_b);
         m_accuracy = options.time_accuracy.value_or(0.25 * r_min);
         m_near = options.near_step * r_min;
@@ -63,22 +65,23 @@ public:
     double accuracy() const { return m_accuracy; }
     double near() const { return m_near; }
 
-    /// A lower bound of the distance between the surfaces at time t, certified as the proximity
-    /// queries' lower_bound (the point pairs' distance minus both surfaces' radii), or a value >=
-    /// `limit` when nothing is closer than `limit`. The walk stops after walk_budget node pairs: far
-    /// from contact a rough bound is enough (its lower bound is that of the pairs left, and the
-    /// advancement then steps a little shorter).
-    double lower_bound(double t, double limit)
+    /// A lower bound of the distance between the surfaces at time t, certified whatever the fit:
+    /// every point of a surface lies within the reach of its nearest cloud point (the domain radius,
+    /// capped by the support radius; surface_gap.h), so the smallest |p - q| - reach(p) - reach(q)
+    /// over the point pairs bounds the distance from below. A value >= `limit` when nothing is closer
+    /// than `limit`. The walk enters walk_budget node pairs at most: far from contact a rough bound
+    /// is enough (the pairs left count with their node bounds, and the advancement then steps a
+    /// little shorter). It stops at the first point pair whose gap is below `band` (the caller's
+    /// near band: that pair alone decides) and returns that gap.
+    double lower_bound(double t, double limit, double band)
     {
         ++m_counters.advancement_steps;
-        Distance_counters dc;
-        Distance_options o = m_options.distance;
-        o.max_node_pairs = std::min<std::size_t>(o.max_node_pairs.value_or(walk_budget), walk_budget);
-        Proximity_query<A, B> q(m_a, m_motion_a.pose(t), m_b, m_motion_b.pose(t), o, dc);
-        const auto pairs = q.closest_pairs(1, limit + m_rho);
-        m_counters.node_pairs += dc.node_pairs;
-        const double point_lower = std::min(pairs.best.empty() ? limit + m_rho : pairs.best.front().distance, pairs.pending_lower);
-        return point_lower - m_rho;
+        const Rigid_transform_3<double> a_to_b = m_motion_b.pose(t).inverse() * m_motion_a.pose(t);
+        const std::size_t budget = std::min<std::size_t>(m_options.distance.max_node_pairs.value_or(walk_budget), walk_budget);
+        const internal::Surface_gap_bound g =
+            internal::surface_gap_lower_bound(m_a.hierarchy(), m_b.hierarchy(), a_to_b, m_reach_a, m_reach_b, limit, band, budget);
+        m_counters.node_pairs += g.node_pairs;
+        return g.lower;
     }
 
     /// Whether the surfaces are within the tolerance at time t.
@@ -137,7 +140,7 @@ private:
     const Contact_time_options& m_options;
     Contact_time_counters& m_counters;
     double m_speed = 0.0;
-    double m_rho = 0.0;
+    internal::Surface_reach m_reach_a, m_reach_b;
     double m_accuracy = 0.0;
     double m_near = 0.0;
 };
@@ -149,8 +152,9 @@ private:
 /// tolerance 0).
 ///
 /// Method: conservative advancement. At time t a walk of the two hierarchies bounds the surfaces'
-/// distance from below by L (the closest point pairs minus both surfaces' radii r(P) + 2 sigma, as
-/// the lower_bound of distance()); no point moves faster than v (the motions' max_point_speed over
+/// distance from below by L (the smallest |p - q| - reach(p) - reach(q) over the point pairs, where a
+/// point's reach is its domain radius capped by the support radius: every zero of f lies within the
+/// reach of its nearest cloud point, so L holds whatever the fit); no point moves faster than v (the motions' max_point_speed over
 /// the clouds' bounding balls, both objects summed), so the surfaces stay farther apart than the
 /// tolerance until t + (L - tolerance) / v, and t advances by that much. Where L - tolerance is
 /// below near_step r_min (the bound cannot exclude contact), the surfaces are checked for contact
@@ -158,8 +162,7 @@ private:
 /// until a check finds contact or L rises again. A contact found is bracketed by bisection until no
 /// point moves farther than time_accuracy within the bracket.
 ///
-/// Guarantee: (1) where the lower bound holds (it does wherever the surfaces lie within r(P) +
-/// 2 sigma of their samples, the premise of the proximity queries' interval), `no_contact` means the
+/// Guarantee: (1) `no_contact` means the
 /// surfaces stayed farther apart than the tolerance over [0, 1] except possibly for contacts that
 /// begin and end between two sub-steps of the near band, which move no point farther than
 /// near_step r_min relative to the other object: such a contact is shallower than that (half a
@@ -199,7 +202,7 @@ Contact_time_result time_of_contact(const A& a, const MA& motion_a, const B& b, 
             return r;
         }
         const double remaining = v * (1.0 - t); // the farthest any point can still move relative to the other object
-        const double lower = q.lower_bound(t, tol + remaining + q.near());
+        const double lower = q.lower_bound(t, tol + remaining + q.near(), tol + q.near());
         if (lower > tol + remaining) { // nothing can come within the tolerance before t = 1
             r.status = Contact_time_status::no_contact;
             r.t_low = 1.0;
