@@ -3,15 +3,17 @@
 // sphere shot through a thin plate faster than discrete steps can see, near misses; and, on random
 // motions of torus and sphere clouds (fixed seeds), against dense discrete do_intersect checks: no
 // contact that the dense checks find comes before t_low, and no_contact only where they find none,
-// for the default fit and for the IMLS fit of the sharp-feature options. The advancement's lower
-// bound (surface_gap.h) against brute force over all point pairs, and against the distances between
-// points of the two zero sets found by projection (it must stay below every one of them).
+// for the default fit, the IMLS fit of the sharp-feature options and the lean (Euclidean) object.
+// The advancement's lower bound (surface_gap.h) against brute force over all point pairs, and
+// against the distances between points of the two zero sets found by projection (it must stay below
+// every one of them).
 #include <PCCD/Continuous/Contact_time_options.h>
 #include <PCCD/Continuous/Rigid_motion.h>
 #include <PCCD/Continuous/time_of_contact.h>
 
 #include <catch2/catch.hpp>
 
+#include <PCCD/Euclidean_point_cloud_object.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Proximity/internal/surface_gap.h>
 #include <PCCD/Random.h>
@@ -224,7 +226,8 @@ TEST_CASE("time_of_contact: a small fast sphere through a thin plate does not tu
 namespace {
 
 /// 30 random motions of `a` and `b` (seed 2024) against 1,000 discrete checks each.
-void check_against_dense_checks(const Object& a, const Object& b)
+template <class A, class B>
+void check_against_dense_checks(const A& a, const B& b)
 {
     PCCD::Random_engine engine(2024);
     int contacts = 0, misses = 0;
@@ -269,6 +272,14 @@ TEST_CASE("time_of_contact: against dense discrete checks on random motions", "[
 {
     SECTION("default fit") { check_against_dense_checks(torus(), sphere(1.0)); }
     SECTION("IMLS fit (sharp-feature options)") { check_against_dense_checks(imls_torus(), imls_sphere()); }
+    SECTION("lean objects (Euclidean kernel)")
+    {
+        const auto t = pccd_test::sample_shape(pccd_test::test_torus(), 3000, 0.0, 44);
+        const auto u = pccd_test::sample_shape(pccd_test::unit_sphere(), 3000, 0.0, 41);
+        const PCCD::Euclidean_point_cloud_object<> lean_torus(pccd_test::columns(t.points));
+        const PCCD::Euclidean_point_cloud_object<> lean_sphere(pccd_test::columns(u.points));
+        check_against_dense_checks(lean_torus, lean_sphere);
+    }
 }
 
 namespace {

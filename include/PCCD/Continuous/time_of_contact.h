@@ -84,6 +84,24 @@ public:
         return g.lower;
     }
 
+    /// Whether the near band holds at t without a new bound: the last bound, L at time t_b, put
+    /// t_b in the band, and L + v (t - t_b) is still below tolerance + near_step r_min (a bound rises
+    /// no faster than the objects move). Staying in the band is always safe, since it only checks
+    /// more often; what this saves is the walks of a deep band, where the bound lies several
+    /// near-band steps below its edge.
+    bool still_in_band(double t) const
+    {
+        return m_band_time && m_band_lower + m_speed * (t - *m_band_time) < m_options.tolerance + m_near;
+    }
+    /// Records the bound that put time t in the near band (see still_in_band()).
+    void entered_band(double t, double lower)
+    {
+        m_band_time = t;
+        m_band_lower = lower;
+    }
+    /// The advancement left the near band.
+    void left_band() { m_band_time.reset(); }
+
     /// Whether the surfaces are within the tolerance at time t.
     Contact_check check(double t)
     {
@@ -141,6 +159,8 @@ private:
     Contact_time_counters& m_counters;
     double m_speed = 0.0;
     internal::Surface_reach m_reach_a, m_reach_b;
+    std::optional<double> m_band_time; // the time of the bound that put the walk in the near band
+    double m_band_lower = 0.0;         // and that bound
     double m_accuracy = 0.0;
     double m_near = 0.0;
 };
@@ -201,17 +221,21 @@ Contact_time_result time_of_contact(const A& a, const MA& motion_a, const B& b, 
             r.t_low = std::max(0.0, clear);
             return r;
         }
-        const double remaining = v * (1.0 - t); // the farthest any point can still move relative to the other object
-        const double lower = q.lower_bound(t, tol + remaining + q.near(), tol + q.near());
-        if (lower > tol + remaining) { // nothing can come within the tolerance before t = 1
-            r.status = Contact_time_status::no_contact;
-            r.t_low = 1.0;
-            return r;
-        }
-        if (lower - tol >= q.near()) { // advance: certified free of contact until t + (lower - tol) / v
-            clear = t;
-            t = std::min(1.0, t + (lower - tol) / v);
-            continue;
+        if (!q.still_in_band(t)) {
+            const double remaining = v * (1.0 - t); // the farthest any point can still move relative to the other object
+            const double lower = q.lower_bound(t, tol + remaining + q.near(), tol + q.near());
+            if (lower > tol + remaining) { // nothing can come within the tolerance before t = 1
+                r.status = Contact_time_status::no_contact;
+                r.t_low = 1.0;
+                return r;
+            }
+            if (lower - tol >= q.near()) { // advance: certified free of contact until t + (lower - tol) / v
+                q.left_band();
+                clear = t;
+                t = std::min(1.0, t + (lower - tol) / v);
+                continue;
+            }
+            q.entered_band(t, lower);
         }
         // The near band: check this time, then a sub-step of near_step r_min of motion.
         ++r.counters.near_checks;
