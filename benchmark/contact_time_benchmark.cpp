@@ -365,7 +365,7 @@ Model_summary run_model(const std::string& name, std::size_t index, const Argume
                 s.toc_not_d30, s.d30_not_toc, s.toc_not_d300, s.d300_not_toc, s.toc_after_d300, s.fcl_not_toc, s.toc_not_fcl);
     std::printf("mean |t_toc - t_fcl_naive| x path = %.2f mean spacings (%zu motions), against fcl_ca_or %.2f (%zu motions)\n",
                 s.err_naive, s.err_naive_n, s.err_ca, s.err_ca_n);
-    std::printf("toc mean counters per motion: %.1f advancement steps (walks, near-band walks included), %.1f near checks, "
+    std::printf("toc mean counters per motion: %.1f walks (advancement steps and near-band steps that took a new bound), %.1f near checks, "
                 "%.1f bisection steps, %.0f node pairs, %.0f f evaluations\n",
                 s.advancement, s.near, s.bisection, s.node_pairs, s.f_evaluations);
     std::fflush(stdout);

@@ -51,7 +51,8 @@ enum class Contact_time_status : std::uint8_t {
 
 /// Counters of one time_of_contact() call.
 struct Contact_time_counters {
-    /// Conservative advancement steps (each one walk of the two hierarchies).
+    /// Walks of the two hierarchies for a lower bound: one per advancement step, and one per
+    /// near-band step that could have left the band (time_of_contact() skips the others).
     std::size_t advancement_steps = 0;
     /// Contact checks at sub-steps of the near band, and bisection steps.
     std::size_t near_checks = 0;
