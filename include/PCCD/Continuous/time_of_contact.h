@@ -1,8 +1,9 @@
 // PCCD/Continuous/time_of_contact.h -- time_of_contact(), continuous collision detection between
 // two point-cloud objects moving rigidly over t in [0, 1]: conservative advancement on a certified
-// lower bound of the surfaces' distance (point pairs minus their reaches, Proximity/internal/surface_gap.h), contact
-// checks at short sub-steps where that bound cannot exclude contact, and bisection of the first
-// contact time (doc/algorithms.md, "Continuous collision"; doc/manual/continuous.md).
+// lower bound of the surfaces' distance (point pairs minus their reaches,
+// Proximity/internal/surface_gap.h), contact checks at short sub-steps where that bound cannot
+// exclude contact, and bisection of the first contact time (doc/algorithms.md, "Continuous
+// collision"; doc/manual/continuous.md).
 #pragma once
 
 #include <algorithm>
@@ -172,24 +173,24 @@ private:
 /// tolerance 0).
 ///
 /// Method: conservative advancement. At time t a walk of the two hierarchies bounds the surfaces'
-/// distance from below by L (the smallest |p - q| - reach(p) - reach(q) over the point pairs, where a
-/// point's reach is its domain radius capped by the support radius: every zero of f lies within the
-/// reach of its nearest cloud point, so L holds whatever the fit); no point moves faster than v (the motions' max_point_speed over
-/// the clouds' bounding balls, both objects summed), so the surfaces stay farther apart than the
-/// tolerance until t + (L - tolerance) / v, and t advances by that much. Where L - tolerance is
-/// below near_step r_min (the bound cannot exclude contact), the surfaces are checked for contact
-/// (do_intersect, or within_distance for a positive tolerance) at sub-steps of near_step r_min / v
-/// until a check finds contact or L rises again. A contact found is bracketed by bisection until no
-/// point moves farther than time_accuracy within the bracket.
+/// distance from below by L (the smallest |p - q| - reach(p) - reach(q) over the point pairs, where
+/// a point's reach is its domain radius capped by the support radius: every zero of f lies within
+/// the reach of its nearest cloud point, so L holds whatever the fit); no point moves faster than v
+/// (the motions' max_point_speed over the clouds' bounding balls, both objects summed), so the
+/// surfaces stay farther apart than the tolerance until t + (L - tolerance) / v, and t advances by
+/// that much. Where L - tolerance is below near_step r_min (the bound cannot exclude contact), the
+/// surfaces are checked for contact (do_intersect, or within_distance for a positive tolerance) at
+/// sub-steps of near_step r_min / v until a check finds contact or L rises again (the walk is not
+/// repeated while L + v (t - t_L) stays in the band). A contact found is bracketed by bisection
+/// until no point moves farther than time_accuracy within the bracket.
 ///
-/// Guarantee: (1) `no_contact` means the
-/// surfaces stayed farther apart than the tolerance over [0, 1] except possibly for contacts that
-/// begin and end between two sub-steps of the near band, which move no point farther than
-/// near_step r_min relative to the other object: such a contact is shallower than that (half a
-/// sampling radius by default); (2) `contact` at t means a check found the surfaces within the
-/// tolerance at t, and no check and no bound found contact before t_low; the bracket satisfies
-/// v (t_high - t_low) <= time_accuracy. The time is that of the first contact found: with the
-/// exception of (1), the first contact.
+/// Guarantee: (1) `no_contact` means the surfaces stayed farther apart than the tolerance over
+/// [0, 1] except possibly for contacts that begin and end between two sub-steps of the near band,
+/// which move no point farther than near_step r_min relative to the other object: such a contact
+/// is shallower than that (half a sampling radius by default); (2) `contact` at t means a check
+/// found the surfaces within the tolerance at t, and no check and no bound found contact before
+/// t_low; the bracket satisfies v (t_high - t_low) <= time_accuracy. The time is that of the first
+/// contact found: with the exception of (1), the first contact.
 ///
 /// \tparam A, B models of ProximityObject (Point_cloud_object<K>).
 /// \tparam MA, MB models of RigidMotion (Linear_motion, Screw_motion).
