@@ -126,6 +126,7 @@
 // Kinetic AABB trees
 #include <PCCD/Kinetic/Cubic.h>
 #include <PCCD/Kinetic/Deformation.h>
+#include <PCCD/Kinetic/Deforming_motion.h>
 #include <PCCD/Kinetic/Deforming_point_cloud_object.h>
 #include <PCCD/Kinetic/Event_queue.h>
 #include <PCCD/Kinetic/Kinetic_AABB_tree.h>
@@ -137,5 +138,6 @@
 #include <PCCD/Kinetic/Polynomial_flightplan.h>
 #include <PCCD/Kinetic/Refit_AABB_tree.h>
 #include <PCCD/Kinetic/boxes_overlap.h>
+#include <PCCD/Kinetic/flightplan_speed.h>
 #include <PCCD/Kinetic/intersect_ray_triangle.h>
 #include <PCCD/Kinetic/next_crossing.h>

@@ -51,6 +51,9 @@ public:
             throw Invalid_input(concat("time_of_contact: the motions' speed bound ", m_speed, " is not finite"));
         m_reach_a = internal::surface_reach(a.hierarchy(), double(a.surface().support_radius()));
         m_reach_b = internal::surface_reach(b.hierarchy(), double(b.surface().support_radius()));
+        // A motion that changes its object's reaches (Deforming_motion) scales them to bound every frame's.
+        if constexpr (requires { motion_a.reach_scale(); }) m_reach_a.rule.scale *= double(motion_a.reach_scale());
+        if constexpr (requires { motion_b.reach_scale(); }) m_reach_b.rule.scale *= double(motion_b.reach_scale());
         const double r_a = double(a.sampling_radius()), r_b = double(b.sampling_radius());
         const double r_min = std::min(r_a, r_b);
         m_accuracy = options.time_accuracy.value_or(0.25 * r_min);
@@ -77,12 +80,24 @@ public:
     double lower_bound(double t, double limit, double band)
     {
         ++m_counters.advancement_steps;
+        frame(t);
         const Rigid_transform_3<double> a_to_b = m_motion_b.pose(t).inverse() * m_motion_a.pose(t);
         const std::size_t budget = std::min<std::size_t>(m_options.distance.max_node_pairs.value_or(walk_budget), walk_budget);
         const internal::Surface_gap_bound g =
             internal::surface_gap_lower_bound(m_a.hierarchy(), m_b.hierarchy(), a_to_b, m_reach_a, m_reach_b, limit, band, budget);
         m_counters.node_pairs += g.node_pairs;
         return g.lower;
+    }
+
+    /// Brings the objects of motions that change them (Deforming_motion: advance_object()) to time
+    /// t, once per time.
+    void frame(double t)
+    {
+        if (m_frame_at == t) return;
+        m_frame_at.reset(); // a frame that throws leaves no claim
+        if constexpr (requires { m_motion_a.advance_object(t); }) m_motion_a.advance_object(t);
+        if constexpr (requires { m_motion_b.advance_object(t); }) m_motion_b.advance_object(t);
+        m_frame_at = t;
     }
 
     /// Whether the near band holds at t without a new bound: the last bound, L at time t_b, put
@@ -106,6 +121,7 @@ public:
     /// Whether the surfaces are within the tolerance at time t.
     Contact_check check(double t)
     {
+        frame(t);
         const Rigid_transform_3<double> pa = m_motion_a.pose(t), pb = m_motion_b.pose(t);
         Contact_check c;
         if (m_options.tolerance == 0.0) {
@@ -162,6 +178,7 @@ private:
     internal::Surface_reach m_reach_a, m_reach_b;
     std::optional<double> m_band_time; // the time of the bound that put the walk in the near band
     double m_band_lower = 0.0;         // and that bound
+    std::optional<double> m_frame_at;  // the time of the objects' frames (motions that change them)
     double m_accuracy = 0.0;
     double m_near = 0.0;
 };
@@ -193,7 +210,9 @@ private:
 /// contact found: with the exception of (1), the first contact.
 ///
 /// \tparam A, B models of ProximityObject (Point_cloud_object<K>).
-/// \tparam MA, MB models of RigidMotion (Linear_motion, Screw_motion).
+/// \tparam MA, MB models of RigidMotion (Linear_motion, Screw_motion, or Deforming_motion for a
+///         Deforming_point_cloud_object following flightplans: then each time is looked at on the
+///         frame advance_object() makes, and the reaches are scaled by reach_scale()).
 /// \throws Invalid_input for invalid options (the message names the field), or motions whose speed
 ///         bound is not finite.
 /// Thread safety: the objects and motions are only read; any number of calls may run concurrently.
