@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstddef>
 #include <span>
 
 #include <Eigen/Core>
@@ -30,9 +29,9 @@ namespace PCCD {
 /// of its edges, the advancement's lower bound uses the reaches scaled by reach_scale().
 ///
 /// It models RigidMotion and adds advance_object(s), which time_of_contact() calls before it looks
-/// at the object at s, and reach_scale(). The motion holds the object and the flightplans by reference: both must
-/// outlive it, and the object's frame changes during the query (afterwards it is at the last time
-/// the query looked at; call advance_to() to set another). A frame that breaks the object's stretch
+/// at the object at s, and reach_scale(). The motion holds the object and the flightplans by
+/// reference: both must outlive it, and the object's frame changes during the query (afterwards it
+/// is at the last time the query looked at; call advance_to() to set another). A frame that breaks the object's stretch
 /// rule ends the query with its Deformation_error (under Stretch_action::fail).
 ///
 /// \tparam K the object's kernel. \tparam F a model of PiecewiseCubicFlightplan.

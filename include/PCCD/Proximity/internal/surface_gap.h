@@ -35,8 +35,7 @@ struct Surface_reach {
 /// The surface reach of an object whose surface has support radius `support`.
 inline Surface_reach surface_reach(const Point_cloud_hierarchy& h, double support)
 {
-    return h.has_reach() ? Surface_reach{Reach_rule{.scale = 1.0, .cap = support}, 0.0}
-                         : Surface_reach{Reach_rule{.scale = 1.0, .cap = support}, support};
+    return Surface_reach{Reach_rule{.scale = 1.0, .cap = support}, h.has_reach() ? 0.0 : support};
 }
 
 /// What surface_gap_lower_bound() found.
