@@ -6,14 +6,15 @@
 //
 //   distance_benchmark [--models bunny00.off,elephant.off,armadillo.off,ChineseDragon-10kv.off]
 //                      [--points 30000] [--rotations 20] [--repetitions 5] [--seed 1]
-//                      [--margin 2] [--candidates 2] [--evict 64] [--csv OUT]
+//                      [--margin 2] [--candidates 2] [--certified 0|1] [--evict 64] [--csv OUT]
 //
 // Per model: the mesh is normalized into [-1, 1]^3, FCL's OBBRSS hierarchy is built on it, and a
 // cloud of --points points is sampled by area and preprocessed with default options. Per pose (d =
 // 0 .. 3 step 0.25, --rotations rotation pairs per d), four methods:
 //   fcl          FCL's distance() on the mesh, exact (rel_err = abs_err = 0, nearest points on);
 //   distance     PCCD::distance() with default options (intersection seed --seed; --candidates
-//                sets Distance_options::candidates, default 2 as the library's);
+//                sets Distance_options::candidates, default 2 as the library's; --certified 1 sets
+//                Distance_options::certified_lower_bound, for within as well);
 //   within       PCCD::within_distance() with a margin of --margin mean spacings of the cloud;
 //   do_intersect PCCD::do_intersect() with the options the two queries above decide the status with.
 // Times are this thread's CPU time in us. Cold: each method once per pose, the four interleaved per
@@ -66,6 +67,7 @@ struct Arguments {
     std::uint64_t seed = 1;
     double margin_spacings = 2.0;
     std::size_t candidates = PCCD::Distance_options{}.candidates;
+    bool certified = false;
     std::size_t evict_mib = 64;
     std::string csv;
 };
@@ -94,6 +96,7 @@ Arguments parse(int argc, char** argv)
         else if (key == "--margin") a.margin_spacings = std::stod(value);
         else if (key == "--evict") a.evict_mib = std::stoul(value);
         else if (key == "--candidates") a.candidates = std::stoul(value);
+        else if (key == "--certified") a.certified = std::stoi(value) != 0;
         else if (key == "--csv") a.csv = value;
         else throw std::invalid_argument("unknown option " + key);
     }
@@ -249,7 +252,8 @@ void run_model(const std::string& name, const Arguments& args, std::ofstream* cs
         {.distances = PCCD::testing::default_benchmark_distances(), .rotations_per_distance = args.rotations,
          .seed = args.seed});
     const PCCD::Intersection_options intersection_options{.seed = args.seed};
-    const PCCD::Distance_options distance_options{.candidates = args.candidates, .intersection = intersection_options};
+    const PCCD::Distance_options distance_options{
+        .candidates = args.candidates, .certified_lower_bound = args.certified, .intersection = intersection_options};
 
     // One run of method m on a pose, its CPU time and outcome.
     const auto run = [&](int m, const PCCD::testing::Benchmark_pose& pose) {
@@ -405,9 +409,10 @@ int main(int argc, char** argv)
         const Arguments args = parse(argc, argv);
         if (std::string(PCCD_DATA_DIR).empty()) throw std::runtime_error("no libcgal-demo data directory configured");
         std::printf("distance_benchmark: %zu points per cloud, %zu rotation pairs x 13 distances (0:3:0.25), seed %llu, "
-                    "margin %.2f mean spacings, %zu candidates; cold = one run per pose (methods interleaved, each after a %zu MiB cache "
+                    "margin %.2f mean spacings, %zu candidates%s; cold = one run per pose (methods interleaved, each after a %zu MiB cache "
                     "sweep), warm = median of %d runs in a row; thread CPU time in us, one thread\n",
-                    args.points, args.rotations, (unsigned long long)args.seed, args.margin_spacings, args.candidates, args.evict_mib,
+                    args.points, args.rotations, (unsigned long long)args.seed, args.margin_spacings, args.candidates,
+                    args.certified ? ", certified lower bound" : "", args.evict_mib,
                     args.repetitions);
         std::ofstream csv;
         if (!args.csv.empty()) {

@@ -1,5 +1,5 @@
 // pccd clearance OBJECT SCENE --path poses.csv --margin M [--max-distance CAP] [--tolerance T]
-//   [--relative-tolerance R] [--budget-us T] [--max-node-pairs N] [--penetration] [--seed S]
+//   [--relative-tolerance R] [--budget-us T] [--max-node-pairs N] [--certified-lower-bound] [--penetration] [--seed S]
 //   [--threads N] [--orthonormalize] [--json] [--png F]:
 // the clearance of an object moved along a path of poses through a scene (PCCD::clearance: at each
 // pose the distance between the two implicit surfaces placed against the margin, with its honest
@@ -43,6 +43,7 @@ struct Clearance_cli_options {
     std::string budget_us;          // empty or 0: none
     std::string kernel = "auto";    // auto, geodesic or euclidean
     std::size_t max_node_pairs = 0; // 0: none
+    bool certified_lower_bound = false;
     bool penetration = false;
     bool orthonormalize = false;
     std::uint64_t seed = PCCD::Intersection_options{}.seed;
@@ -75,6 +76,7 @@ PCCD::Clearance_options clearance_options(const Clearance_cli_options& o, double
         if (us != 0.0) d.max_time_us = us; // 0: no budget, as for pccd distance
     }
     if (o.max_node_pairs != 0) d.max_node_pairs = o.max_node_pairs;
+    d.certified_lower_bound = o.certified_lower_bound;
     if (o.threads > PCCD::Batch_options::max_threads)
         throw PCCD::Invalid_input("--threads " + std::to_string(o.threads) + ": must be at most " +
                                   std::to_string(PCCD::Batch_options::max_threads) + " (0: all available)");
@@ -294,6 +296,9 @@ void register_clearance(CLI::App& app)
                     "machine's speed");
     cmd->add_option("--max-node-pairs", o->max_node_pairs,
                     "Budget per pose on the node pairs of the closest-pair walk (deterministic; default 0: none)");
+    cmd->add_flag("--certified-lower-bound", o->certified_lower_bound,
+                  "Certify each pose's lower_bound: point pair distances minus the points' domain radii (holds "
+                  "whatever the fit; 13-27 % more time) instead of minus r(P) + 2 sigma per surface");
     cmd->add_flag("--penetration", o->penetration, "For intersecting poses, also measure the penetration depth (depth)");
     cmd->add_option("--kernel", o->kernel, kernel_option_help())
         ->check(CLI::IsMember({"auto", "geodesic", "euclidean"}));

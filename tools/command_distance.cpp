@@ -1,5 +1,6 @@
 // pccd distance A B [--transform-a 12 numbers] [--transform-b 12 numbers] [--orthonormalize] [--normalize]
 //   [--penetration] [--max-distance D] [--tolerance T] [--relative-tolerance R] [--budget-us T] [--max-node-pairs N]
+//   [--certified-lower-bound]
 //   [--seed S] [--margin M | --contacts [--max-contacts N]] [--json] [--png F] [--cases FILE]:
 // how far apart two posed point clouds are (PCCD::distance: the distance between their implicit
 // surfaces, an honest interval around it, the witness points and normals, and with --penetration
@@ -49,6 +50,7 @@ struct Distance_cli_options {
     std::string relative_tolerance; // empty: 0
     std::string budget_us;          // empty or 0: none
     std::size_t max_node_pairs = 0; // 0: none
+    bool certified_lower_bound = false;
     std::string margin;             // set: within_distance
     bool contacts = false;
     std::size_t max_contacts = PCCD::Distance_options{}.max_contacts;
@@ -84,6 +86,7 @@ PCCD::Distance_options distance_options(const Distance_cli_options& o)
         if (us != 0.0) options.max_time_us = us; // 0: no budget, as for pccd collide
     }
     if (o.max_node_pairs != 0) options.max_node_pairs = o.max_node_pairs;
+    options.certified_lower_bound = o.certified_lower_bound;
     if (o.max_contacts == 0) throw PCCD::Invalid_input("--max-contacts 0: must be >= 1");
     options.max_contacts = o.max_contacts;
     PCCD::internal::check_options(options, "pccd distance");
@@ -286,6 +289,7 @@ void run_distance_with(const Distance_cli_options& o, const PCCD::Distance_optio
     r["max_distance"] = options.max_distance ? nlohmann::ordered_json(*options.max_distance) : nullptr;
     r["absolute_tolerance"] = options.absolute_tolerance ? nlohmann::ordered_json(*options.absolute_tolerance) : nullptr;
     r["relative_tolerance"] = options.relative_tolerance;
+    r["certified_lower_bound"] = options.certified_lower_bound;
 
     // The query, its JSON, the numbers that JSON shows as null, and the segment to draw.
     nlohmann::ordered_json result;
@@ -398,6 +402,9 @@ void register_distance(CLI::App& app)
     cmd->add_option("--max-node-pairs", o->max_node_pairs,
                     "Budget on the node pairs of the closest-pair walk (deterministic; default 0: none); the "
                     "interval [lower_bound, upper_bound] narrows as it grows");
+    cmd->add_flag("--certified-lower-bound", o->certified_lower_bound,
+                  "Certify lower_bound: point pair distances minus the points' domain radii (holds whatever the fit; "
+                  "13-27 % more time) instead of minus r(P) + 2 sigma per surface");
     auto* margin = cmd->add_option("--margin", o->margin,
                                    "Answer within_distance instead: whether the surfaces come closer than M (>= 0)");
     auto* contacts = cmd->add_flag("--contacts", o->contacts,

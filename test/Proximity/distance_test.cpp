@@ -8,6 +8,7 @@
 #include <PCCD/Proximity/Distance_options.h>
 #include <PCCD/Proximity/Distance_result.h>
 #include <PCCD/Proximity/distance.h>
+#include <PCCD/Proximity/internal/surface_reach.h>
 #include <PCCD/Random.h>
 #include <PCCD/concepts/ProximityObject.h>
 #include <PCCD/testing/Sphere_shape.h>
@@ -18,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "proximity_test_helpers.h"
@@ -161,6 +163,123 @@ TEST_CASE("within_distance: the clearance test agrees with the distance", "[prox
     const PCCD::Clearance_result c = PCCD::within_distance(s.a, pose_a, s.b, touching, 0.0);
     CHECK(c.within);
     CHECK(c.status == PCCD::Intersection_status::intersecting);
+}
+
+namespace {
+
+/// x moved onto the zero set of `o`'s surface by Newton steps along n(x); nullopt where f is undefined.
+template <class O>
+std::optional<Eigen::Vector3d> onto_surface(const O& o, Eigen::Vector3d x)
+{
+    for (int k = 0; k < 30; ++k) {
+        const PCCD::Surface_evaluation e = o.surface().evaluate(x);
+        if (!e.defined()) return std::nullopt;
+        x -= e.value * e.normal;
+        if (std::abs(e.value) < 1e-12) break;
+    }
+    return x;
+}
+
+/// The smallest |T p - q| - reach(p) - reach(q) over all point pairs of two objects (T = a_to_b),
+/// reach the domain radius capped by the support radius: what certified_lower_bound certifies.
+template <class O>
+double brute_force_gap(const O& a, const O& b, const Rigid_transform_3<double>& a_to_b)
+{
+    const auto ra = PCCD::internal::surface_reach(a.hierarchy(), a.surface().support_radius());
+    const auto rb = PCCD::internal::surface_reach(b.hierarchy(), b.surface().support_radius());
+    const Eigen::Matrix4Xd& pa = a.hierarchy().ordered_points();
+    const Eigen::Matrix4Xd& pb = b.hierarchy().ordered_points();
+    double gap = std::numeric_limits<double>::infinity();
+    for (Eigen::Index i = 0; i < pa.cols(); ++i) {
+        const Eigen::Vector3d p = a_to_b.transform_point(Eigen::Vector3d(pa.col(i).head<3>()));
+        const double reach_p = ra(pa(3, i));
+        for (Eigen::Index j = 0; j < pb.cols(); ++j)
+            gap = std::min(gap, (pb.col(j).head<3>() - p).norm() - reach_p - rb(pb(3, j)));
+    }
+    return gap;
+}
+
+} // namespace
+
+TEST_CASE("distance: certified_lower_bound equals the brute-force gap of the reaches, also under budgets", "[proximity]")
+{
+    const Sphere_pair& s = spheres();
+    const Rigid_transform_3<double> pose_a;
+    const double slack = 0.5 * std::min(s.a.sampling_radius(), s.b.sampling_radius());
+    PCCD::Random_engine engine(31);
+    for (int k = 0; k < 6; ++k) {
+        const double gap = s.spacing * (1.0 + 15.0 * PCCD::uniform_01(engine));
+        const auto pose_b = centred_at((2.0 + gap) * random_direction(engine), 400 + k);
+        const double truth = brute_force_gap(s.a, s.b, pose_b.inverse() * pose_a);
+        INFO("pose " << k << ": gap " << gap / s.spacing << " spacings, brute-force reach gap " << truth);
+        const PCCD::Distance_result r = PCCD::distance(s.a, pose_a, s.b, pose_b, {.certified_lower_bound = true});
+        REQUIRE(r.status == PCCD::Intersection_status::separate);
+        // the walk finds the smallest gap to within its slack, and never above it
+        CHECK(r.lower_bound <= std::max(0.0, truth) + 1e-12);
+        CHECK(r.lower_bound >= truth - slack - 1e-12);
+        CHECK(r.lower_bound <= r.distance);
+        // the same answer otherwise: the certificate only adds node pairs to the walk
+        const PCCD::Distance_result plain = PCCD::distance(s.a, pose_a, s.b, pose_b);
+        CHECK(r.distance == Approx(plain.distance).margin(0.05 * s.spacing));
+        for (std::size_t budget : {1u, 8u, 64u}) {
+            const PCCD::Distance_result b = PCCD::distance(s.a, pose_a, s.b, pose_b, {.max_node_pairs = budget, .certified_lower_bound = true});
+            CHECK(b.lower_bound <= std::max(0.0, truth) + 1e-12);
+        }
+        // max_distance below the certified gap: "farther than" (+inf, the bound at least the cap), or
+        // the distance of a pair the walk still met, beyond the cap
+        if (truth > 2.0 * s.spacing) {
+            const double cap = truth - s.spacing;
+            const PCCD::Distance_result far = PCCD::distance(s.a, pose_a, s.b, pose_b, {.max_distance = cap, .certified_lower_bound = true});
+            CHECK(far.distance >= cap);
+            CHECK(far.lower_bound <= std::max(0.0, truth) + 1e-12);
+            if (std::isinf(far.distance)) CHECK(far.lower_bound >= cap);
+        }
+    }
+}
+
+TEST_CASE("distance: certified_lower_bound holds where the surface spans a hole in its samples", "[proximity]")
+{
+    // A plane sampled with a hole of 2.5 mean spacings' radius: its surface is defined within the
+    // hole's rim points' domain radii, so its zero set reaches into the hole farther from every
+    // sample than the surface radius r(P) + 2 sigma. A small dense sphere hovers over the hole.
+    PCCD::Random_engine engine(5);
+    const std::size_t n = 20000;
+    const double spacing = std::sqrt(4.0 / double(n));
+    const double hole = 2.5 * spacing;
+    std::vector<Eigen::Vector3d> plane;
+    while (plane.size() < n) {
+        const Eigen::Vector3d p(PCCD::uniform_real(engine, -1.0, 1.0), PCCD::uniform_real(engine, -1.0, 1.0), 0.0);
+        if (p.head<2>().norm() >= hole) plane.push_back(p);
+    }
+    std::vector<Eigen::Vector3d> ball;
+    const double radius = 0.3 * spacing;
+    for (int i = 0; i < 3000; ++i) ball.push_back(radius * random_direction(engine));
+    const PCCD::Point_cloud_object<> a(plane);
+    const PCCD::Point_cloud_object<> b(ball);
+    const Rigid_transform_3<double> pose_a;
+    const Rigid_transform_3<double> pose_b(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.0, 0.0, radius + 0.3 * spacing));
+
+    // The zero set of the plane inside the hole: the first point of a ray from the centre where f
+    // is defined, projected; and the sphere's lowest surface point.
+    std::optional<Eigen::Vector3d> za;
+    for (double x = 0.0; x < hole && !za; x += 0.01 * spacing) za = onto_surface(a, Eigen::Vector3d(x, 0.0, 0.0));
+    REQUIRE(za);
+    const std::optional<Eigen::Vector3d> zb = onto_surface(b, Eigen::Vector3d(0.0, 0.0, -radius));
+    REQUIRE(zb);
+    double nearest_sample = std::numeric_limits<double>::infinity();
+    for (const auto& p : plane) nearest_sample = std::min(nearest_sample, (p - *za).norm());
+    // the scenario: this zero-set point lies farther from the samples than r(P) + 2 sigma
+    REQUIRE(nearest_sample > a.sampling_radius() + 2.0 * a.noise_estimate());
+    const double surfaces_apart_at_most = (pose_b.transform_point(*zb) - *za).norm();
+
+    const PCCD::Distance_result r = PCCD::distance(a, pose_a, b, pose_b, {.certified_lower_bound = true});
+    INFO("zero set " << nearest_sample / spacing << " spacings from the samples; surfaces at most " << surfaces_apart_at_most
+                     << " apart; certified lower bound " << r.lower_bound);
+    REQUIRE(r.status == PCCD::Intersection_status::separate);
+    CHECK(r.lower_bound <= surfaces_apart_at_most);
+    const PCCD::Clearance_result c =
+        PCCD::within_distance(a, pose_a, b, pose_b, 2.0 * surfaces_apart_at_most, {.certified_lower_bound = true});
+    CHECK(c.lower_bound <= surfaces_apart_at_most);
 }
 
 TEST_CASE("distance: bad arguments are refused with a clear message", "[proximity]")

@@ -3,7 +3,7 @@
 // within_distance), and compared with what the tool printed. Used by run_cli_test.cmake:
 //
 //   distance_reference json A B POSE_B CLI.json [--seed S] [--penetration] [--max-distance D] [--margin M]
-//                      [--tolerance T] [--max-node-pairs N]
+//                      [--tolerance T] [--max-node-pairs N] [--certified-lower-bound]
 //   distance_reference cases A B CASES.csv CLI.csv [--seed S]
 //
 // POSE_B: 12 numbers in one argument, separated by spaces or commas (3x4 row-major); A is at the
@@ -107,7 +107,7 @@ void check_counters(const nlohmann::json& j, const PCCD::Distance_counters& c)
 int usage()
 {
     std::cerr << "usage: distance_reference json A B POSE_B CLI.json [--seed S] [--penetration] [--max-distance D] "
-                 "[--margin M] [--tolerance T] [--max-node-pairs N]\n       distance_reference cases A B CASES.csv CLI.csv [--seed S]\n";
+                 "[--margin M] [--tolerance T] [--max-node-pairs N] [--certified-lower-bound]\n       distance_reference cases A B CASES.csv CLI.csv [--seed S]\n";
     return 2;
 }
 
@@ -128,6 +128,7 @@ int main(int argc, char** argv)
         else if (a == "--margin" && i + 1 < argc) has_margin = true, margin = std::stod(argv[++i]);
         else if (a == "--tolerance" && i + 1 < argc) options.absolute_tolerance = std::stod(argv[++i]);
         else if (a == "--max-node-pairs" && i + 1 < argc) options.max_node_pairs = std::stoull(argv[++i]);
+        else if (a == "--certified-lower-bound") options.certified_lower_bound = true;
         else return usage();
     }
     const PCCD::Point_cloud_object<> a(PCCD::IO::read_points(argv[2]));

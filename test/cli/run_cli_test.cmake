@@ -368,6 +368,14 @@ elseif(CASE STREQUAL "distance_max_distance")
     pccd_expect_between(${lower} 0 1.03 "lower_bound with --max-node-pairs ${budget}")
     pccd_reference(json sphere.xyz sphere.xyz ${shift_3_csv} distance_budget.json --max-node-pairs ${budget})
   endforeach()
+  # The certified lower bound (the points' domain radii instead of r(P) + 2 sigma): still below the
+  # gap 1, and as the C++ API answers.
+  pccd_run(OK ARGS distance sphere.xyz sphere.xyz --transform-b ${shift_3} --certified-lower-bound --json
+           MATCH "\"certified_lower_bound\": true" "\"status\": \"separate\"")
+  file(WRITE ${WORK}/distance_certified.json "${PCCD_STDOUT}")
+  pccd_json_number(lower "${PCCD_STDOUT}" lower_bound)
+  pccd_expect_between(${lower} 0 1.0 "lower_bound with --certified-lower-bound")
+  pccd_reference(json sphere.xyz sphere.xyz ${shift_3_csv} distance_certified.json --certified-lower-bound)
   pccd_run(OK ARGS distance sphere.xyz sphere.xyz --transform-b ${shift_3} --tolerance 0.0005 --json
            MATCH "\"absolute_tolerance\": 0.0005")
   file(WRITE ${WORK}/distance_tolerance.json "${PCCD_STDOUT}")

@@ -125,6 +125,22 @@ def test_a_node_pair_budget_gives_an_honest_interval_that_narrows(ball):
     assert math.isfinite(widths[-1])
 
 
+def test_the_certified_lower_bound_is_below_the_gap_and_the_premise_bound(ball):
+    # certified_lower_bound: point pairs minus the points' domain radii (a certificate whatever
+    # the fit) instead of minus r(P) + 2 sigma; the same distance and witnesses otherwise
+    for gap in (0.1, 0.5):
+        plain = pccd.distance(ball, None, ball, shifted(2 * RADIUS + gap))
+        certified = pccd.distance(ball, None, ball, shifted(2 * RADIUS + gap), certified_lower_bound=True)
+        assert certified.status == plain.status == "separate"
+        assert 0.0 <= certified.lower_bound <= plain.lower_bound + 1e-12
+        assert certified.lower_bound <= gap
+        assert certified.distance == pytest.approx(plain.distance, abs=1e-3)
+        clear = pccd.within_distance(ball, None, ball, shifted(2 * RADIUS + gap), 0.5 * gap, certified_lower_bound=True)
+        assert not clear.within and clear.lower_bound <= gap
+    with pytest.raises(TypeError):
+        pccd.distance(ball, None, ball, shifted(2.0), certified_lower_bound="yes")
+
+
 def test_within_distance_answers_against_the_gap(ball):
     far = shifted(1.5)  # gap 0.5
     yes = pccd.within_distance(ball, None, ball, far, 0.6)

@@ -51,6 +51,14 @@ struct Distance_options {
     /// refined onto the surfaces; the distance is the smallest found. More candidates guard
     /// against a noisy or outlying closest pair at a few more evaluations each. Default 2; >= 1.
     std::size_t candidates = 2;
+    /// Certify lower_bound: bound the surfaces' distance from below by the smallest |p - q| -
+    /// reach(p) - reach(q) over the point pairs, reach(p) the domain radius of p capped by the
+    /// support radius (f is defined nowhere else, so this holds whatever the fit; the walk finds it
+    /// to within half a sampling radius), instead of the closest pair's distance minus the surface
+    /// radii r(P) + 2 sigma (a premise that fails on a few tenths of a percent of the zero set).
+    /// max_distance and a clearance margin then prune by the same reaches. Costs 13-27 % more time
+    /// (doc/benchmarks.md "A certified lower bound"). Default false.
+    bool certified_lower_bound = false;
     /// The query that decides whether the surfaces touch (do_intersect() with these options; its
     /// seed makes the whole query deterministic). Its budgets are replaced by what remains of the
     /// budgets above.

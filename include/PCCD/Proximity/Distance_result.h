@@ -70,12 +70,15 @@ struct Distance_result {
     /// Undecided: NaN.
     double distance = nan;
     /// An honest interval around the distance between the sampled surfaces: lower_bound <= true
-    /// distance <= upper_bound. The lower bound is that of the clouds' closest point pair found so
-    /// far minus both objects' surface radii (sampling radius plus twice the noise: every point of
-    /// a sampled surface lies that close to a sample), so its gap to the distance is about the
-    /// two sampling radii once the walk has ended, and wider when a budget stopped it. The upper
-    /// bound is the distance of the witness points (on the surfaces) plus their |f|. 0 and 0 for
-    /// intersecting poses; 0 and +infinity before anything is known.
+    /// distance <= upper_bound. By default the lower bound is that of the clouds' closest point
+    /// pair found so far minus both objects' surface radii (sampling radius plus twice the noise:
+    /// a premise, every point of a sampled surface lies about that close to a sample), so its gap
+    /// to the distance is about the two sampling radii once the walk has ended, and wider when a
+    /// budget stopped it. With Distance_options::certified_lower_bound it is certified: the
+    /// smallest point pair distance minus both points' domain radii (capped by the support
+    /// radius; f is defined nowhere else). The upper bound is the distance of the witness points
+    /// (on the surfaces) plus their |f|. 0 and 0 for intersecting poses; 0 and +infinity before
+    /// anything is known.
     double lower_bound = 0.0;
     double upper_bound = std::numeric_limits<double>::infinity();
     /// Separate: the closest points found on surface A and surface B, and the surfaces' unit

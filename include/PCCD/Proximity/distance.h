@@ -89,8 +89,9 @@ struct Proximity_query {
     }
 
     /// The k closest point pairs of the clouds within `bound` (their local positions in hierarchy
-    /// order), with the smallest lower bound of what a budget left unvisited.
-    auto closest_pairs(std::size_t k, double bound)
+    /// order), with the smallest lower bound of what a budget left unvisited; `certificate`, when
+    /// given, is brought to the certified lower bound of the surfaces' distance in the same walk.
+    auto closest_pairs(std::size_t k, double bound, Gap_certificate* certificate = nullptr)
     {
         const Point_cloud_hierarchy& ha = pa.object->hierarchy();
         const Point_cloud_hierarchy& hb = pb.object->hierarchy();
@@ -99,6 +100,7 @@ struct Proximity_query {
         };
         const Rigid_transform_3<double> a_to_b = pb.from_world * pa.to_world;
         Closest_pairs_traits<decltype(stop)> traits(ha, hb, a_to_b, k, bound, walk_slack, stop);
+        traits.certificate = certificate;
         // The local search's first pair tightens the pruning of an unbounded walk; under a finite
         // bound (max_distance, a clearance margin) the bound already prunes, and the search would
         // cost more than it saves (measured: within_distance 1.3-1.5x -> 1.1-1.3x do_intersect).
@@ -196,13 +198,25 @@ Distance_result run_distance(const A& a, const Rigid_transform_3<double>& pose_a
     }
     if (decided.status == Intersection_status::undecided) return r;
 
-    // Separate: the closest point pairs, pruned beyond max_distance (or the margin) plus the
-    // surfaces' radii, refined onto the surfaces.
+    // Separate: the closest point pairs, pruned beyond max_distance (or the margin) plus how far a
+    // surface can lie from its samples, refined onto the surfaces. By default that is the surface
+    // radii r(P) + 2 sigma, and the lower bound is the closest pair's distance minus them (a premise
+    // about the fit). With certified_lower_bound it is the points' reaches (domain radii capped by
+    // the support radius, surface_reach.h: f is defined nowhere else), and the same walk certifies
+    // the lower bound: the smallest gap |p - q| - reach(p) - reach(q) over the point pairs.
     const std::optional<double> limit = margin ? margin : options.max_distance;
-    const double bound = limit ? *limit + rho : std::numeric_limits<double>::infinity();
-    const auto walk = q.closest_pairs(options.candidates, bound);
+    const Point_cloud_hierarchy& ha = a.hierarchy();
+    const Point_cloud_hierarchy& hb = b.hierarchy();
+    Gap_certificate certificate{surface_reach(ha, double(a.surface().support_radius())),
+                                surface_reach(hb, double(b.surface().support_radius())),
+                                limit ? *limit : std::numeric_limits<double>::infinity()};
+    const bool certify = options.certified_lower_bound;
+    const double largest_reaches =
+        ha.empty() || hb.empty() ? 0.0 : certificate.reach_s(ha.root().reach) + certificate.reach_t(hb.root().reach);
+    const double bound = limit ? *limit + (certify ? largest_reaches : rho) : std::numeric_limits<double>::infinity();
+    const auto walk = q.closest_pairs(options.candidates, bound, certify ? &certificate : nullptr);
     const double walk_lower = std::min(walk.best.empty() ? bound : walk.best.front().distance, walk.pending_lower);
-    r.lower_bound = std::max(0.0, walk_lower - rho);
+    r.lower_bound = std::max(0.0, certify ? certificate.lower() : walk_lower - rho);
     if (walk.best.empty()) {
         if (!walk.stopped && limit) { // nothing within the limit
             r.distance = std::numeric_limits<double>::infinity();

@@ -3,8 +3,10 @@
 // separation distance's branch and bound): node pairs are pruned by a lower bound on the distance
 // of their points (the boxes' separating axes, the slabs' and the bounding spheres'), leaf pairs
 // compared point by point. Keeps the k closest pairs found in distinct leaf pairs, which the
-// distance query refines onto the surfaces. Under a budget the walk stops descending and records
-// the smallest bound of the pairs it left, so the lower bound it reports stays honest.
+// distance query refines onto the surfaces, and, when asked, certifies a lower bound of the
+// surfaces' distance in the same walk (the smallest |p - q| - reach(p) - reach(q), surface_reach.h).
+// Under a budget the walk stops descending and records the smallest bound of the pairs it left, so
+// the lower bound it reports stays honest.
 #pragma once
 
 #include <algorithm>
@@ -20,6 +22,7 @@
 #include <PCCD/Hierarchy/node_pair_tests.h>
 #include <PCCD/Hierarchy/point_queries.h>
 #include <PCCD/Hierarchy/traversal.h>
+#include <PCCD/Proximity/internal/surface_reach.h>
 #include <PCCD/Rigid_transform_3.h>
 
 namespace PCCD::internal {
@@ -105,12 +108,32 @@ inline Point_pair local_closest_pair(const Point_cloud_hierarchy& s, const Point
     return pair;
 }
 
+/// What a closest-pair walk certifies besides its pairs (Closest_pairs_traits::certificate): the
+/// smallest gap |T p - q| - reach_s(p) - reach_t(q) over the point pairs (T = s_to_t), as far as it
+/// lies below `limit`. Every point of a surface lies within the reach of its nearest cloud point
+/// (surface_reach.h), so the surfaces are at least lower() apart, whatever the fit.
+struct Gap_certificate {
+    Surface_reach reach_s, reach_t;
+    /// Gaps at or above it need not be known (a clearance margin, max_distance; +inf: none).
+    double limit = std::numeric_limits<double>::infinity();
+    /// The smallest gap of a point pair compared so far.
+    double found = std::numeric_limits<double>::infinity();
+    /// The smallest node bound minus the nodes' largest reaches of the pairs a budget left.
+    double pending = std::numeric_limits<double>::infinity();
+
+    /// The certified lower bound of the surfaces' distance.
+    double lower() const { return std::min({found, pending, limit}); }
+    /// The gaps still worth a node pair's descent.
+    double cut() const { return std::min(found, limit); }
+};
+
 /// The k closest point pairs of hierarchies s and t (s mapped into t's frame by `s_to_t`), no two
 /// in the same leaf pair, within `slack` of the true k closest, as traits of traverse(s, 0, t, 0, traits). A node pair is entered when
 /// its lower bound is below the k-th best distance so far (or below `bound` while fewer are known).
 /// `stop()` is asked at every node pair; once it says yes the walk descends no further and keeps
 /// in `pending_lower` the smallest lower bound of the pairs it then met, i.e. of everything left
-/// unvisited.
+/// unvisited. With a `certificate`, a node pair is also entered while its bound minus the nodes'
+/// largest reaches lies below the certificate's cut(), and every leaf pair's point pairs update it.
 template <class Stop>
 struct Closest_pairs_traits {
     using Index = Point_cloud_hierarchy::Index;
@@ -132,6 +155,8 @@ struct Closest_pairs_traits {
     std::size_t point_pairs = 0;
     Mapped_box mapped{};
     Index mapped_node = std::numeric_limits<Index>::max();
+    /// Set by the caller to certify a lower bound of the surfaces' distance in the same walk.
+    Gap_certificate* certificate = nullptr;
 
     Closest_pairs_traits(const Point_cloud_hierarchy& s_, const Point_cloud_hierarchy& t_, const Rigid_transform_3<double>& s_to_t,
                          std::size_t k_, double bound_, double slack_, Stop stop_)
@@ -173,6 +198,7 @@ struct Closest_pairs_traits {
     bool go_further() const { return true; }
     bool enter(Index i, Index j)
     {
+        if (certificate) return enter_certifying(i, j);
         const double cut = cutoff();
         const double lower = lower_bound(i, j, cut);
         if (!(lower < cut)) return false;
@@ -185,6 +211,35 @@ struct Closest_pairs_traits {
         if (!stopped && stop()) stopped = true;
         if (stopped) {
             pending_lower = std::min(pending_lower, lower);
+            return false;
+        }
+        return true;
+    }
+    /// enter() with a certificate: the pair is entered for the closest pairs (as enter()) or for the
+    /// certificate (its bound minus both nodes' largest reaches below the certificate's cut).
+    bool enter_certifying(Index i, Index j)
+    {
+        const double cut = cutoff();
+        const double reaches = certificate->reach_s(s.node(i).reach) + certificate->reach_t(t.node(j).reach);
+        const double gap_cut = certificate->cut();
+        const double lower = lower_bound(i, j, std::max(cut, gap_cut + reaches));
+        bool for_gap = lower - reaches < gap_cut;
+        // As for the pairs: within the slack of the smallest gap found, the pair's bound itself
+        // stands for it (the certified bound is then at most `slack` below the smallest gap).
+        if (for_gap && certificate->found < certificate->limit && !(lower - reaches < gap_cut - slack)) {
+            certificate->pending = std::min(certificate->pending, lower - reaches);
+            for_gap = false;
+        }
+        bool for_pairs = lower < cut;
+        if (for_pairs && best.size() == k && !(lower < cut - slack)) {
+            pending_lower = std::min(pending_lower, lower);
+            for_pairs = false;
+        }
+        if (!for_pairs && !for_gap) return false;
+        if (!stopped && stop()) stopped = true;
+        if (stopped) {
+            pending_lower = std::min(pending_lower, lower);
+            if (for_gap) certificate->pending = std::min(certificate->pending, lower - reaches);
             return false;
         }
         return true;
@@ -212,7 +267,13 @@ struct Closest_pairs_traits {
 
     /// Starts the walk with a known pair (e.g. from a local search): the pruning is tight from the
     /// first node pair on.
-    void seed(const Point_pair& pair) { best.insert(best.begin(), pair); }
+    void seed(const Point_pair& pair)
+    {
+        best.insert(best.begin(), pair);
+        if (certificate)
+            certificate->found = std::min(certificate->found, pair.distance - certificate->reach_s(s.ordered_points()(3, Eigen::Index(pair.first))) -
+                                                                  certificate->reach_t(t.ordered_points()(3, Eigen::Index(pair.second))));
+    }
 
     void leaf_pair(Index i, Index j)
     {
@@ -224,13 +285,32 @@ struct Closest_pairs_traits {
         const double cut = cutoff();
         Point_pair local{0, 0, cut * cut}; // squared while scanning
         bool found = false;
-        for (auto a = ns.first; a < ns.first + ns.count; ++a) {
-            const Eigen::Vector3d p = r * ps.col(a).head<3>() + shift;
-            for (auto b = nt.first; b < nt.first + nt.count; ++b) {
-                const double d = (pt.col(b).head<3>() - p).squaredNorm();
-                if (d < local.distance) {
-                    local = {a, b, d};
-                    found = true;
+        if (certificate) {
+            double gap = certificate->cut();
+            for (auto a = ns.first; a < ns.first + ns.count; ++a) {
+                const Eigen::Vector3d p = r * ps.col(a).head<3>() + shift;
+                const double reach_a = certificate->reach_s(ps(3, a));
+                for (auto b = nt.first; b < nt.first + nt.count; ++b) {
+                    const double d = (pt.col(b).head<3>() - p).squaredNorm();
+                    if (d < local.distance) {
+                        local = {a, b, d};
+                        found = true;
+                    }
+                    const double reaches = reach_a + certificate->reach_t(pt(3, b));
+                    const double within = gap + reaches; // |p - q| below it lowers the gap
+                    if (within > 0.0 && d < within * within) gap = std::sqrt(d) - reaches;
+                }
+            }
+            certificate->found = std::min(certificate->found, gap);
+        } else {
+            for (auto a = ns.first; a < ns.first + ns.count; ++a) {
+                const Eigen::Vector3d p = r * ps.col(a).head<3>() + shift;
+                for (auto b = nt.first; b < nt.first + nt.count; ++b) {
+                    const double d = (pt.col(b).head<3>() - p).squaredNorm();
+                    if (d < local.distance) {
+                        local = {a, b, d};
+                        found = true;
+                    }
                 }
             }
         }

@@ -17,26 +17,10 @@
 #include <PCCD/Hierarchy/reach_traversal.h>
 #include <PCCD/Hierarchy/traversal.h>
 #include <PCCD/Proximity/internal/closest_pairs.h>
+#include <PCCD/Proximity/internal/surface_reach.h>
 #include <PCCD/Rigid_transform_3.h>
 
 namespace PCCD::internal {
-
-/// How far from a cloud point its surface can lie: the point's stored reach (its domain radius)
-/// mapped by `rule` (capped by the support radius: f needs a cloud point that close), plus `extra`.
-/// A hierarchy without reaches (an object without a domain) gets reach 0 and extra = the support
-/// radius, so the bound holds for it too.
-struct Surface_reach {
-    Reach_rule rule;
-    double extra = 0.0;
-
-    double operator()(double stored) const { return rule(stored) + extra; }
-};
-
-/// The surface reach of an object whose surface has support radius `support`.
-inline Surface_reach surface_reach(const Point_cloud_hierarchy& h, double support)
-{
-    return Surface_reach{Reach_rule{.scale = 1.0, .cap = support}, h.has_reach() ? 0.0 : support};
-}
 
 /// What surface_gap_lower_bound() found.
 struct Surface_gap_bound {
