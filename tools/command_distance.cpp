@@ -390,7 +390,9 @@ void register_distance(CLI::App& app)
                   "For intersecting poses, also measure the penetration depths (depth, depth_a, depth_b) and the "
                   "contact normal");
     cmd->add_option("--max-distance", o->max_distance,
-                    "Farther apart than D (world units, >= 0): report only that (distance inf); default: no limit");
+                    "Farther apart than D (world units, >= 0): report only that (distance inf) when no point pair comes "
+                    "within D plus the surfaces' radii (one that does is refined and its distance reported); default: no "
+                    "limit");
     cmd->add_option("--tolerance", o->tolerance,
                     "Absolute tolerance of the witness refinement (world units, > 0); default: 0.01 times the smaller "
                     "sampling radius");

@@ -194,7 +194,9 @@ relative_tolerance : float, optional
     See absolute_tolerance (default 0; finite and >= 0).
 max_distance : float, optional
     Farther apart than this (world units), report only that: status 'separate', distance inf,
-    lower_bound > max_distance, no witnesses. None (default): no limit. Finite and >= 0.
+    lower_bound >= max_distance, no witnesses -- when no point pair comes within it plus the
+    surfaces' radii; a pair that does is refined and its distance reported, even above the limit.
+    None (default): no limit. Finite and >= 0.
 max_f_evaluations : int, optional
     Budget of evaluations of f (both surfaces, the intersection query included); None (default):
     none. A query that runs out answers with what it has (an honest [lower_bound, upper_bound]),

@@ -24,8 +24,11 @@ struct Distance_options {
     /// See absolute_tolerance. Default 0. Must be finite and >= 0.
     double relative_tolerance = 0.0;
     /// Farther than this (world units), report only that: status separate, distance +infinity,
-    /// lower_bound >= max_distance, no witnesses. Cheap: the hierarchy walk prunes every node pair
-    /// beyond it. Unset (default): no limit. When set: finite and >= 0.
+    /// lower_bound >= max_distance, no witnesses, when no point pair of the clouds comes within it
+    /// plus how far the surfaces may lie from their samples (the surface radii, or the reaches with
+    /// certified_lower_bound). A pair that does is refined as usual, and its distance is reported
+    /// even where it ends above max_distance. Cheap: the hierarchy walk prunes every node pair
+    /// beyond that. Unset (default): no limit. When set: finite and >= 0.
     std::optional<double> max_distance = std::nullopt;
     /// Budget on the evaluations of f (both surfaces, the intersection query included). Unset
     /// (default): none. When set: >= 1. A query that runs out answers with what it has: status
