@@ -211,9 +211,11 @@ Distance_result run_distance(const A& a, const Rigid_transform_3<double>& pose_a
                                 surface_reach(hb, double(b.surface().support_radius())),
                                 limit ? *limit : std::numeric_limits<double>::infinity()};
     const bool certify = options.certified_lower_bound;
-    const double largest_reaches =
-        ha.empty() || hb.empty() ? 0.0 : certificate.reach_s(ha.root().reach) + certificate.reach_t(hb.root().reach);
-    const double bound = limit ? *limit + (certify ? largest_reaches : rho) : std::numeric_limits<double>::infinity();
+    const double beyond_samples = !certify ? rho
+                                  : ha.empty() || hb.empty()
+                                      ? 0.0
+                                      : certificate.reach_s(ha.root().reach) + certificate.reach_t(hb.root().reach);
+    const double bound = limit ? *limit + beyond_samples : std::numeric_limits<double>::infinity();
     const auto walk = q.closest_pairs(options.candidates, bound, certify ? &certificate : nullptr);
     const double walk_lower = std::min(walk.best.empty() ? bound : walk.best.front().distance, walk.pending_lower);
     r.lower_bound = std::max(0.0, certify ? certificate.lower() : walk_lower - rho);

@@ -270,9 +270,11 @@ struct Closest_pairs_traits {
     void seed(const Point_pair& pair)
     {
         best.insert(best.begin(), pair);
-        if (certificate)
-            certificate->found = std::min(certificate->found, pair.distance - certificate->reach_s(s.ordered_points()(3, Eigen::Index(pair.first))) -
-                                                                  certificate->reach_t(t.ordered_points()(3, Eigen::Index(pair.second))));
+        if (certificate) {
+            const double reaches = certificate->reach_s(s.ordered_points()(3, Eigen::Index(pair.first))) +
+                                   certificate->reach_t(t.ordered_points()(3, Eigen::Index(pair.second)));
+            certificate->found = std::min(certificate->found, pair.distance - reaches);
+        }
     }
 
     void leaf_pair(Index i, Index j)
@@ -285,6 +287,8 @@ struct Closest_pairs_traits {
         const double cut = cutoff();
         Point_pair local{0, 0, cut * cut}; // squared while scanning
         bool found = false;
+        // Two loops, so that the default's inner loop (a quarter of the walk's time) stays as lean as
+        // without certificates; the certifying one also lowers the certificate's gap pair by pair.
         if (certificate) {
             double gap = certificate->cut();
             for (auto a = ns.first; a < ns.first + ns.count; ++a) {
