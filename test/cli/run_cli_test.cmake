@@ -464,8 +464,10 @@ elseif(CASE MATCHES "^clearance_")
   # past a copy of itself at the origin, centres 4 to 2.25 apart: analytic clearances (the surface
   # gap) 2, 1.75, ..., 0.25. With margin 0.6 the first pose below it is pose 6 (gap 0.5) and the
   # minimum is pose 7 (gap 0.25): both 0.1 or more from the margin, beyond the distance's accuracy
-  # (half a spacing, test/Proximity/distance_test.cpp).
-  file(WRITE ${WORK}/clearance_path.csv
+  # (half a spacing, test/Proximity/distance_test.cpp). Every clearance case writes the same file,
+  # and ctest may run them at once: each writes a file of its own and renames it into place (atomic),
+  # so that no case reads the path while another one rewrites it.
+  file(WRITE ${WORK}/clearance_path.csv.${CASE}
 "r00,r01,r02,t0,r10,r11,r12,t1,r20,r21,r22,t2
 1,0,0,4,0,1,0,0,0,0,1,0
 1,0,0,3.75,0,1,0,0,0,0,1,0
@@ -478,6 +480,7 @@ elseif(CASE MATCHES "^clearance_")
 1,0,0,2.5,0,1,0,0,0,0,1,0
 1,0,0,2.25,0,1,0,0,0,0,1,0
 ")
+  file(RENAME ${WORK}/clearance_path.csv.${CASE} ${WORK}/clearance_path.csv)
   set(number "[-0-9.e+infa]+")
   if(CASE STREQUAL "clearance_text")
     pccd_run(OK ARGS clearance sphere.xyz sphere.xyz --path clearance_path.csv --margin 0.6
