@@ -6,7 +6,7 @@
 //   hierarchy_benchmark [--models bunny00.off,elephant.off,eight.off] [--points 30000]
 //                       [--rotations 50] [--repetitions 3] [--seed 1]
 //                       [--traversals flat,depth_first,likelihood] [--volumes box_and_slab,box,sphere]
-//                       [--kernels geodesic,euclidean] [--probes DRAWS,STEPS] [--csv OUT]
+//                       [--kernels geodesic,euclidean] [--probes DRAWS,STEPS] [--leaf-size 8] [--csv OUT]
 //                       [--budgets 5,10,20,50,100 --budget-csv OUT]
 //
 // Peak memory (getrusage) is printed after each model's preprocessing. Per model: the mesh is normalized into [-1, 1]^3, FCL's OBBRSS hierarchy is built on it, and a
@@ -18,7 +18,7 @@
 // FCL's, p99, and how often each traversal's verdict differs from the flat traversal's and from FCL's.
 // --kernels euclidean adds (or, alone, runs only) the lean object's likelihood walk ("euclidean"),
 // with its own preprocessing time and peak. --probes sets the interpolation search's probes (probe_draws,
-// probe_steps; 0,0: none) of every PCCD method.
+// probe_steps; 0,0: none) of every PCCD method; --leaf-size the hierarchies' leaf_size (default 8).
 #include "collision_baselines.h"
 
 #include <PCCD/testing/csv.h>
@@ -66,6 +66,8 @@ struct Arguments {
     /// The interpolation search's probes (Interpolation_search::probe_draws, probe_steps); unset: the defaults.
     std::optional<std::size_t> probe_draws;
     std::optional<std::size_t> probe_steps;
+    /// Point_cloud_hierarchy_options::leaf_size of every PCCD object.
+    std::size_t leaf_size = PCCD::Point_cloud_hierarchy_options{}.leaf_size;
 };
 
 /// The leaf intersector of every PCCD method: the default one, with the probes of --probes.
@@ -107,14 +109,15 @@ Arguments parse(int argc, char** argv)
             a.probe_draws = std::stoul(v[0]);
             a.probe_steps = std::stoul(v[1]);
         }
+        else if (key == "--leaf-size") a.leaf_size = std::stoul(value);
         else if (key == "--csv") a.csv = value;
         else if (key == "--budgets") {
             for (const auto& item : split(value)) a.budgets.push_back(std::stod(item));
         } else if (key == "--budget-csv") a.budget_csv = value;
         else throw std::invalid_argument("unknown option " + key);
     }
-    if (a.repetitions < 1 || a.rotations == 0 || a.points < 100)
-        throw std::invalid_argument("--repetitions and --rotations must be >= 1, --points >= 100");
+    if (a.repetitions < 1 || a.rotations == 0 || a.points < 100 || a.leaf_size == 0)
+        throw std::invalid_argument("--repetitions, --rotations and --leaf-size must be >= 1, --points >= 100");
     return a;
 }
 
@@ -241,18 +244,18 @@ void run_model(const std::string& name, const Arguments& args, std::ofstream* cs
     std::optional<PCCD::Euclidean_point_cloud_object<>> lean;
     if (has_kernel("euclidean")) {
         const auto start = PCCD::testing::Clock::now();
-        lean.emplace(points, PCCD::Point_cloud_object_options{.hierarchy = {.volume = volume_of(args.volumes.front())}});
+        lean.emplace(points, PCCD::Point_cloud_object_options{.hierarchy = {.leaf_size = args.leaf_size, .volume = volume_of(args.volumes.front())}});
         report("lean, Euclidean", *lean, PCCD::testing::ms_since(start));
     }
     std::optional<PCCD::Point_cloud_object<>> geodesic;
     std::map<std::string, PCCD::Point_cloud_object<>> with_volume;
     if (has_kernel("geodesic")) {
         const auto start = PCCD::testing::Clock::now();
-        geodesic.emplace(points, PCCD::Point_cloud_object_options{.hierarchy = {.volume = volume_of(args.volumes.front())}});
+        geodesic.emplace(points, PCCD::Point_cloud_object_options{.hierarchy = {.leaf_size = args.leaf_size, .volume = volume_of(args.volumes.front())}});
         report("geodesic", *geodesic, PCCD::testing::ms_since(start));
         // The same cloud with each further bounding volume (the first is `geodesic`).
         for (std::size_t k = 1; k < args.volumes.size(); ++k)
-            with_volume.emplace(args.volumes[k], PCCD::Point_cloud_object<>(points, {.hierarchy = {.volume = volume_of(args.volumes[k])}}));
+            with_volume.emplace(args.volumes[k], PCCD::Point_cloud_object<>(points, {.hierarchy = {.leaf_size = args.leaf_size, .volume = volume_of(args.volumes[k])}}));
     }
 
     std::vector<double> distances;

@@ -10,7 +10,8 @@
 //                       [--csv FILE] [--kernel geodesic|euclidean]  (the tunnel's object; the wagon is geodesic)
 //                       [--kd all|capped]  (capped: the unbounded kd method is not run, its figures nan)
 //                       [--surface default|sharp]  (sharp: both objects with the sharp-feature options of
-//                       doc/manual/surface.md: Surface_fit::imls, theta_eps 3e-5, normal_bandwidth 0.75)
+//                       doc/manual/surface.md: Surface_fit::imls, theta_eps 3e-5, normal_residual_scale 0.25)
+//                       [--leaf-size L]  (both objects' Point_cloud_hierarchy_options::leaf_size)
 //
 // Per pose (wagon pose from the scene's path, tunnel at the identity), three answers:
 //   exact   exact_distance(wagon mesh, pose, tunnel mesh, identity): the clearance (0 if touching);
@@ -88,6 +89,8 @@ struct Arguments {
     bool skip_kd = false;
     /// --surface default or sharp (the sharp-feature surface for both objects).
     bool sharp = false;
+    /// --leaf-size: Point_cloud_hierarchy_options::leaf_size of both objects (default: the library's).
+    std::size_t leaf_size = PCCD::Point_cloud_hierarchy_options{}.leaf_size;
 };
 
 Arguments parse(int argc, char** argv)
@@ -109,9 +112,10 @@ Arguments parse(int argc, char** argv)
         else if (key == "--kernel" && (value == "geodesic" || value == "euclidean")) a.kernel = value;
         else if (key == "--kd" && (value == "all" || value == "capped")) a.skip_kd = value == "capped";
         else if (key == "--surface" && (value == "default" || value == "sharp")) a.sharp = value == "sharp";
+        else if (key == "--leaf-size") a.leaf_size = std::stoul(value);
         else throw std::invalid_argument("unknown option " + key);
     }
-    if (a.repetitions < 1) throw std::invalid_argument("--repetitions must be >= 1");
+    if (a.repetitions < 1 || a.leaf_size == 0) throw std::invalid_argument("--repetitions and --leaf-size must be >= 1");
     if (!(std::isfinite(a.margin) && a.margin > 0.0 && std::isfinite(a.cap) && a.cap >= a.margin))
         throw std::invalid_argument("--margin must be finite and > 0, --cap finite and >= --margin");
     if (a.threads && *a.threads == 0) throw std::invalid_argument("--threads must be >= 1");
@@ -269,7 +273,7 @@ void run(const Arguments& args)
     // The rest for the tunnel object of --kernel.
     const auto with_tunnel = [&](auto tag) {
     using Tunnel = typename decltype(tag)::type;
-    const PCCD::Point_cloud_object_options defaults{.threads = args.threads};
+    const PCCD::Point_cloud_object_options defaults{.hierarchy = {.leaf_size = args.leaf_size}, .threads = args.threads};
     const PCCD::Point_cloud_object_options object_options =
         args.sharp ? PCCD::testing::sharp_feature_options(defaults) : defaults;
     reset_peak_memory();
