@@ -88,10 +88,10 @@ struct Arguments {
     /// --kd all (default) or capped: with capped the unbounded kd method is not run (its figures are
     /// nan); the bounded one gives the same clearances below the cap in a thousandth of the time.
     bool skip_kd = false;
-    /// --surface default, sharp (the sharp-feature surface for both objects) or sharp-wagon (for the
-    /// wagon only, the tunnel default).
-    bool sharp = false;
-    bool sharp_wagon_only = false;
+    /// Which objects get the sharp-feature surface: --surface sharp both, sharp-wagon the wagon only,
+    /// default neither.
+    bool sharp_wagon = false;
+    bool sharp_tunnel = false;
     /// --leaf-size: Point_cloud_hierarchy_options::leaf_size of both objects (default: the library's).
     std::size_t leaf_size = PCCD::Point_cloud_hierarchy_options{}.leaf_size;
 };
@@ -115,8 +115,8 @@ Arguments parse(int argc, char** argv)
         else if (key == "--kernel" && (value == "geodesic" || value == "euclidean")) a.kernel = value;
         else if (key == "--kd" && (value == "all" || value == "capped")) a.skip_kd = value == "capped";
         else if (key == "--surface" && (value == "default" || value == "sharp" || value == "sharp-wagon")) {
-            a.sharp = value != "default";
-            a.sharp_wagon_only = value == "sharp-wagon";
+            a.sharp_wagon = value != "default";
+            a.sharp_tunnel = value == "sharp";
         }
         else if (key == "--leaf-size") a.leaf_size = std::stoul(value);
         else throw std::invalid_argument("unknown option " + key);
@@ -280,13 +280,14 @@ void run(const Arguments& args)
     const auto with_tunnel = [&](auto tag) {
     using Tunnel = typename decltype(tag)::type;
     const PCCD::Point_cloud_object_options defaults{.hierarchy = {.leaf_size = args.leaf_size}, .threads = args.threads};
-    const PCCD::Point_cloud_object_options object_options =
-        args.sharp ? PCCD::testing::sharp_feature_options(defaults) : defaults;
-    const PCCD::Point_cloud_object_options& tunnel_options = args.sharp_wagon_only ? defaults : object_options;
+    const PCCD::Point_cloud_object_options wagon_options =
+        args.sharp_wagon ? PCCD::testing::sharp_feature_options(defaults) : defaults;
+    const PCCD::Point_cloud_object_options tunnel_options =
+        args.sharp_tunnel ? PCCD::testing::sharp_feature_options(defaults) : defaults;
     reset_peak_memory();
     const auto before_objects = memory_mib();
     start = Clock::now();
-    const PCCD::Point_cloud_object<> wagon(scene.wagon_points, object_options);
+    const PCCD::Point_cloud_object<> wagon(scene.wagon_points, wagon_options);
     const double wagon_s = PCCD::testing::seconds_since(start);
     start = Clock::now();
     const Tunnel tunnel(scene.tunnel_points, tunnel_options);
