@@ -135,6 +135,12 @@ PCCD::Bounding_volume volume_of(const std::string& name)
     throw std::invalid_argument("unknown bounding volume " + name + " (box_and_slab, box, sphere)");
 }
 
+/// The options of every PCCD object of the run: the bounding volume `volume` and --leaf-size.
+PCCD::Point_cloud_object_options object_options(const Arguments& args, const std::string& volume)
+{
+    return {.hierarchy = {.leaf_size = args.leaf_size, .volume = volume_of(volume)}};
+}
+
 double thread_cpu_us()
 {
     timespec t{};
@@ -244,18 +250,18 @@ void run_model(const std::string& name, const Arguments& args, std::ofstream* cs
     std::optional<PCCD::Euclidean_point_cloud_object<>> lean;
     if (has_kernel("euclidean")) {
         const auto start = PCCD::testing::Clock::now();
-        lean.emplace(points, PCCD::Point_cloud_object_options{.hierarchy = {.leaf_size = args.leaf_size, .volume = volume_of(args.volumes.front())}});
+        lean.emplace(points, object_options(args, args.volumes.front()));
         report("lean, Euclidean", *lean, PCCD::testing::ms_since(start));
     }
     std::optional<PCCD::Point_cloud_object<>> geodesic;
     std::map<std::string, PCCD::Point_cloud_object<>> with_volume;
     if (has_kernel("geodesic")) {
         const auto start = PCCD::testing::Clock::now();
-        geodesic.emplace(points, PCCD::Point_cloud_object_options{.hierarchy = {.leaf_size = args.leaf_size, .volume = volume_of(args.volumes.front())}});
+        geodesic.emplace(points, object_options(args, args.volumes.front()));
         report("geodesic", *geodesic, PCCD::testing::ms_since(start));
         // The same cloud with each further bounding volume (the first is `geodesic`).
         for (std::size_t k = 1; k < args.volumes.size(); ++k)
-            with_volume.emplace(args.volumes[k], PCCD::Point_cloud_object<>(points, {.hierarchy = {.leaf_size = args.leaf_size, .volume = volume_of(args.volumes[k])}}));
+            with_volume.emplace(args.volumes[k], PCCD::Point_cloud_object<>(points, object_options(args, args.volumes[k])));
     }
 
     std::vector<double> distances;
