@@ -13,6 +13,9 @@
 //                       options of doc/manual/surface.md: Surface_fit::imls, theta_eps 3e-5,
 //                       normal_residual_scale 0.25; sharp-wagon: the wagon only)
 //                       [--leaf-size L]  (both objects' Point_cloud_hierarchy_options::leaf_size)
+//                       [--wagon-fit plane|sphere|imls] [--wagon-theta-eps E] [--wagon-residual-scale S]
+//                       (the wagon's Surface_fit, bandwidth.theta_eps and normal_residual_scale, set
+//                       after --surface; S = 0 means no robust refit)
 //
 // Per pose (wagon pose from the scene's path, tunnel at the identity), three answers:
 //   exact   exact_distance(wagon mesh, pose, tunnel mesh, identity): the clearance (0 if touching);
@@ -94,6 +97,11 @@ struct Arguments {
     bool sharp_tunnel = false;
     /// --leaf-size: Point_cloud_hierarchy_options::leaf_size of both objects (default: the library's).
     std::size_t leaf_size = PCCD::Point_cloud_hierarchy_options{}.leaf_size;
+    /// --wagon-fit, --wagon-theta-eps, --wagon-residual-scale: single fields of the wagon's surface
+    /// options, applied after --surface (residual scale 0: no robust refit).
+    std::optional<PCCD::Surface_fit> wagon_fit;
+    std::optional<double> wagon_theta_eps;
+    std::optional<double> wagon_residual_scale;
 };
 
 Arguments parse(int argc, char** argv)
@@ -119,6 +127,11 @@ Arguments parse(int argc, char** argv)
             a.sharp_tunnel = value == "sharp";
         }
         else if (key == "--leaf-size") a.leaf_size = std::stoul(value);
+        else if (key == "--wagon-fit" && value == "plane") a.wagon_fit = PCCD::Surface_fit::plane;
+        else if (key == "--wagon-fit" && value == "sphere") a.wagon_fit = PCCD::Surface_fit::sphere;
+        else if (key == "--wagon-fit" && value == "imls") a.wagon_fit = PCCD::Surface_fit::imls;
+        else if (key == "--wagon-theta-eps") a.wagon_theta_eps = std::stod(value);
+        else if (key == "--wagon-residual-scale") a.wagon_residual_scale = std::stod(value);
         else throw std::invalid_argument("unknown option " + key);
     }
     if (a.repetitions < 1 || a.leaf_size == 0) throw std::invalid_argument("--repetitions and --leaf-size must be >= 1");
@@ -280,8 +293,13 @@ void run(const Arguments& args)
     const auto with_tunnel = [&](auto tag) {
     using Tunnel = typename decltype(tag)::type;
     const PCCD::Point_cloud_object_options defaults{.hierarchy = {.leaf_size = args.leaf_size}, .threads = args.threads};
-    const PCCD::Point_cloud_object_options wagon_options =
+    PCCD::Point_cloud_object_options wagon_options =
         args.sharp_wagon ? PCCD::testing::sharp_feature_options(defaults) : defaults;
+    if (args.wagon_fit) wagon_options.surface_fit = *args.wagon_fit;
+    if (args.wagon_theta_eps) wagon_options.bandwidth.theta_eps = *args.wagon_theta_eps;
+    if (args.wagon_residual_scale)
+        wagon_options.normal_residual_scale =
+            *args.wagon_residual_scale > 0.0 ? std::optional<double>(*args.wagon_residual_scale) : std::nullopt;
     const PCCD::Point_cloud_object_options tunnel_options =
         args.sharp_tunnel ? PCCD::testing::sharp_feature_options(defaults) : defaults;
     reset_peak_memory();
