@@ -11,7 +11,7 @@
 // Usage: surface_reach [--csv F]     (about 10 s)
 #include <PCCD/Random.h>
 #include <PCCD/testing/scan_validation.h>
-#include <PCCD/testing/sharp_feature_options.h>
+#include <PCCD/sharp_feature_options.h>
 
 #include <algorithm>
 #include <cmath>
@@ -46,7 +46,7 @@ try {
         for (const bool sharp : {false, true}) {
             for (const double noise : {0.0, 0.3}) {
                 const auto cloud = PCCD::testing::make_scan_cloud(model, {"c", 1.0, noise, 0.0}, noise > 0.0 ? 2027 : 2026,
-                                                                  sharp ? PCCD::testing::sharp_feature_options()
+                                                                  sharp ? PCCD::sharp_feature_options()
                                                                         : PCCD::Point_cloud_object_options{});
                 const PCCD::Point_cloud_object<>& o = *cloud.object;
                 const double rho = o.sampling_radius() + 2.0 * o.noise_estimate();

@@ -42,7 +42,7 @@
 #include <PCCD/testing/csv.h>
 #include <PCCD/testing/process_memory.h>
 #include <PCCD/testing/scenes/Tunnel_scene.h>
-#include <PCCD/testing/sharp_feature_options.h>
+#include <PCCD/sharp_feature_options.h>
 #include <PCCD/testing/statistics.h>
 #include <PCCD/testing/timing.h>
 
@@ -294,14 +294,14 @@ void run(const Arguments& args)
     using Tunnel = typename decltype(tag)::type;
     const PCCD::Point_cloud_object_options defaults{.hierarchy = {.leaf_size = args.leaf_size}, .threads = args.threads};
     PCCD::Point_cloud_object_options wagon_options =
-        args.sharp_wagon ? PCCD::testing::sharp_feature_options(defaults) : defaults;
+        args.sharp_wagon ? PCCD::sharp_feature_options(defaults) : defaults;
     if (args.wagon_fit) wagon_options.surface_fit = *args.wagon_fit;
     if (args.wagon_theta_eps) wagon_options.bandwidth.theta_eps = *args.wagon_theta_eps;
     if (args.wagon_residual_scale)
         wagon_options.normal_residual_scale =
             *args.wagon_residual_scale > 0.0 ? std::optional<double>(*args.wagon_residual_scale) : std::nullopt;
     const PCCD::Point_cloud_object_options tunnel_options =
-        args.sharp_tunnel ? PCCD::testing::sharp_feature_options(defaults) : defaults;
+        args.sharp_tunnel ? PCCD::sharp_feature_options(defaults) : defaults;
     reset_peak_memory();
     const auto before_objects = memory_mib();
     start = Clock::now();

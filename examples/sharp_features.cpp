@@ -6,6 +6,7 @@
 #include <PCCD/Surface/Euclidean_distance.h>
 #include <PCCD/Surface/estimate_normals.h>
 #include <PCCD/sample_triangle_mesh.h>
+#include <PCCD/sharp_feature_options.h>
 
 #include <array>
 #include <iostream>
@@ -21,10 +22,9 @@ int main()
     PCCD::Random_engine engine(7);
     const Eigen::Matrix3Xd points = PCCD::sample_triangle_mesh(corners, triangles, 6000, engine).points;
 
-    PCCD::Point_cloud_object_options sharp;
-    sharp.surface_fit = PCCD::Surface_fit::imls;
-    sharp.bandwidth.theta_eps = 3e-5;
-    sharp.normal_residual_scale = 0.25; // robust refit: neighbours off a point's face lose their weight
+    // The sharp-feature options in one call: the IMLS fit, theta_eps 3e-5 and the robust normal refit
+    // (normal_residual_scale 0.25: neighbours off a point's face lose their weight).
+    const PCCD::Point_cloud_object_options sharp = PCCD::sharp_feature_options();
     const PCCD::Point_cloud_object<> by_default(points);
     const PCCD::Point_cloud_object<> with_edges(points, sharp);
 

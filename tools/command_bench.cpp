@@ -38,7 +38,7 @@ struct Bench_options {
     std::string csv;
     std::string hierarchy = "likelihood";
     double budget_us = 0.0;
-    std::string volume = "box_and_slab";
+    Object_settings object;
 };
 
 double parse_distance(const std::string& text, const std::string& spec)
@@ -119,7 +119,7 @@ void run_bench(const Bench_options& o)
 
     std::string description;
     const Object_points points = load_bench_points(o, description);
-    const Prepared_object prepared = prepare_object(points, o.file, o.volume);
+    const Prepared_object prepared = prepare_object(points, o.file, o.object);
     const PCCD::Point_cloud_object<>& object = prepared.object;
     std::printf("object: %s (%s), normalized into [-1,1]^3\n", o.file.c_str(), description.c_str());
     std::printf("preprocessed in %.0f ms: %zu points, r(P) %.5f\n", prepared.preprocess_ms, object.size(),
@@ -191,9 +191,7 @@ void register_bench(CLI::App& app)
         ->check(CLI::IsMember(traversal_names()));
     cmd->add_option("--budget-us", o->budget_us, "Time budget per query in microseconds (default 0: none)")
         ->check(CLI::NonNegativeNumber);
-    cmd->add_option("--volume", o->volume,
-                    "Bounding volume of the hierarchy's node tests: box_and_slab (default), box or sphere")
-        ->check(CLI::IsMember(volume_names()));
+    add_object_settings(cmd, o->object, true);
     cmd->callback([o] { run_bench(*o); });
 }
 

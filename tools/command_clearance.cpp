@@ -42,6 +42,7 @@ struct Clearance_cli_options {
     std::string relative_tolerance; // empty: 0
     std::string budget_us;          // empty or 0: none
     std::string kernel = "auto";    // auto, geodesic or euclidean
+    Object_settings object;
     std::size_t max_node_pairs = 0; // 0: none
     bool certified_lower_bound = false;
     bool penetration = false;
@@ -189,8 +190,8 @@ void run_clearance_with(const Clearance_cli_options& o, double margin, const PCC
                         const std::vector<PCCD::Rigid_transform_3<double>>& poses, const Two_clouds& clouds)
 {
     const bool same = clouds.same;
-    const Prepared_object<Object> object = prepare_object<Object>(clouds.a, o.file_object);
-    const Prepared_object<Object> scene = same ? object : prepare_object<Object>(*clouds.b, o.file_scene);
+    const Prepared_object<Object> object = prepare_object<Object>(clouds.a, o.file_object, o.object);
+    const Prepared_object<Object> scene = same ? object : prepare_object<Object>(*clouds.b, o.file_scene, o.object);
 
     const Clock::time_point start = Clock::now();
     const PCCD::Clearance_profile p = PCCD::clearance(object.object, scene.object, poses, margin, options);
@@ -300,6 +301,7 @@ void register_clearance(CLI::App& app)
                   "Certify each pose's lower_bound: point pair distances minus the points' domain radii (holds "
                   "whatever the fit; 13-27 % more time) instead of minus r(P) + 2 sigma per surface");
     cmd->add_flag("--penetration", o->penetration, "For intersecting poses, also measure the penetration depth (depth)");
+    add_object_settings(cmd, o->object, false);
     cmd->add_option("--kernel", o->kernel, kernel_option_help())
         ->check(CLI::IsMember({"auto", "geodesic", "euclidean"}));
     cmd->add_option("--seed", o->seed, "Seed of the queries (default 24301 = 0x5eed; pose i gets pair_seed(seed, i))");

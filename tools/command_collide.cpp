@@ -48,7 +48,7 @@ struct Collide_options {
     std::string cases;
     std::string hierarchy = "likelihood";
     double budget_us = 0.0;
-    std::string volume = "box_and_slab";
+    Object_settings object;
     std::string png;
     std::string kernel = "auto"; // auto, geodesic or euclidean
 };
@@ -91,8 +91,8 @@ void run_collide_with(const Collide_options& o, const PCCD::Intersection_options
     const bool first_hit = o.mode == "first";
     const bool same = clouds.same;
     const auto& [cases, pose_a, pose_b] = poses;
-    const Prepared_object<Object> a = prepare_object<Object>(clouds.a, o.file_a, o.volume);
-    const Prepared_object<Object> b = same ? a : prepare_object<Object>(*clouds.b, o.file_b, o.volume);
+    const Prepared_object<Object> a = prepare_object<Object>(clouds.a, o.file_a, o.object);
+    const Prepared_object<Object> b = same ? a : prepare_object<Object>(*clouds.b, o.file_b, o.object);
     const double preprocess_ms = a.preprocess_ms + (same ? 0.0 : b.preprocess_ms);
 
     if (cases) {
@@ -204,9 +204,7 @@ void register_collide(CLI::App& app)
                     "Time budget per query in microseconds (time-critical: status undecided when it runs out "
                     "first; default 0: none)")
         ->check(CLI::NonNegativeNumber);
-    cmd->add_option("--volume", o->volume,
-                    "Bounding volume of the hierarchies' node tests: box_and_slab (default), box or sphere")
-        ->check(CLI::IsMember(volume_names()));
+    add_object_settings(cmd, o->object, true);
     cmd->add_option("--kernel", o->kernel, kernel_option_help())
         ->check(CLI::IsMember({"auto", "geodesic", "euclidean"}));
     auto* out = cmd->add_option("--out", o->out, "Write the intersection points to this file (.ply, .off, .xyz)");

@@ -57,6 +57,7 @@ struct Contact_time_cli_options {
     std::string png;
     std::string png_time; // empty: the contact time (t_low without contact)
     std::string cases;
+    Object_settings object;
 };
 
 /// The number an option was given, checked: finite, and >= 0 (or > 0 when `positive`).
@@ -215,8 +216,8 @@ void run_contact_time(const Contact_time_cli_options& o)
     const Object_points points_a = read_object_points(o.file_a, o.normalize);
     const std::optional<Object_points> points_b =
         same ? std::nullopt : std::optional<Object_points>(read_object_points(o.file_b, o.normalize));
-    const Prepared_object a = prepare_object(points_a, o.file_a);
-    const Prepared_object b = same ? a : prepare_object(*points_b, o.file_b);
+    const Prepared_object a = prepare_object(points_a, o.file_a, o.object);
+    const Prepared_object b = same ? a : prepare_object(*points_b, o.file_b, o.object);
     const double preprocess_ms = a.preprocess_ms + (same ? 0.0 : b.preprocess_ms);
 
     if (cases) {
@@ -356,6 +357,7 @@ void register_contact_time(CLI::App& app)
                     "Sub-step of the contact checks near contact, in sampling radii (in (0, 4], default 0.5)");
     cmd->add_option("--max-steps", o->max_steps, "Budget of steps; then the answer is undecided (default 100000)");
     cmd->add_option("--seed", o->seed, "Seed of the contact checks (default 24301 = 0x5eed)");
+    add_object_settings(cmd, o->object, false);
     auto* json = cmd->add_flag("--json", o->json,
                                "Print one JSON object, the result's fields named as in C++ (NaN: null)");
     auto* png = cmd->add_option("--png", o->png,

@@ -59,6 +59,7 @@ struct Distance_cli_options {
     std::string png;
     std::string cases;
     std::string kernel = "auto"; // auto, geodesic or euclidean
+    Object_settings object;
 };
 
 /// The number an option was given, checked: finite, and >= 0 (or > 0 when `positive`).
@@ -259,8 +260,8 @@ void run_distance_with(const Distance_cli_options& o, const PCCD::Distance_optio
 {
     const bool same = clouds.same;
     const auto& [cases, pose_a, pose_b] = poses;
-    const Prepared_object<Object> a = prepare_object<Object>(clouds.a, o.file_a);
-    const Prepared_object<Object> b = same ? a : prepare_object<Object>(*clouds.b, o.file_b);
+    const Prepared_object<Object> a = prepare_object<Object>(clouds.a, o.file_a, o.object);
+    const Prepared_object<Object> b = same ? a : prepare_object<Object>(*clouds.b, o.file_b, o.object);
     const double preprocess_ms = a.preprocess_ms + (same ? 0.0 : b.preprocess_ms);
 
     if (cases) {
@@ -414,6 +415,7 @@ void register_distance(CLI::App& app)
     cmd->add_option("--max-contacts", o->max_contacts, "With --contacts: the most regions returned (default 8)");
     margin->excludes(contacts);
     cmd->add_option("--seed", o->seed, "Seed of the query (default 24301 = 0x5eed)");
+    add_object_settings(cmd, o->object, false);
     cmd->add_option("--kernel", o->kernel, kernel_option_help())
         ->check(CLI::IsMember({"auto", "geodesic", "euclidean"}));
     auto* json = cmd->add_flag("--json", o->json,

@@ -55,6 +55,7 @@ struct World_command_options {
     std::string size = "1200x800";
     std::string view = "30,25";
     std::string kernel = "auto"; // auto, geodesic or euclidean
+    Object_settings object;
 };
 
 /// One row of the scene: the file, its pose and its collision filter; for a generated row also the
@@ -174,7 +175,7 @@ void run_world(const World_command_options& o)
         std::vector<std::shared_ptr<const Object>> objects;
         nlohmann::ordered_json object_entries = nlohmann::ordered_json::array(); // the JSON's "objects"
         for (std::size_t i = 0; i < files.size(); ++i) {
-            Prepared_object<Object> prepared = prepare_object<Object>(points[i], files[i]);
+            Prepared_object<Object> prepared = prepare_object<Object>(points[i], files[i], o.object);
             object_entries.push_back(object_json(files[i], prepared));
             objects.push_back(std::make_shared<const Object>(std::move(prepared.object)));
         }
@@ -325,6 +326,7 @@ void register_world(CLI::App& app)
                     "Time budget per pair in microseconds (0: none); a pair that runs out is reported 'undecided'");
     cmd->add_option("--threads", o->threads, "Worker threads of the narrow phase (default: all available)")
         ->check(CLI::Range(1u, 4096u));
+    add_object_settings(cmd, o->object, false);
     cmd->add_option("--kernel", o->kernel, kernel_option_help())
         ->check(CLI::IsMember({"auto", "geodesic", "euclidean"}));
     cmd->add_flag("--json", o->json, "Print the result as JSON");

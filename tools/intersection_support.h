@@ -11,11 +11,13 @@
 #include <PCCD/Euclidean_point_cloud_object.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Similarity_3.h>
+#include <PCCD/sharp_feature_options.h>
 
 #include <PCCD/testing/timing.h>
 
 #include "progress.h"
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -120,14 +122,16 @@ constexpr const char* kernel_name()
     return PCCD::GeodesicCollisionObject<Object> ? "geodesic" : "euclidean";
 }
 
-/// A prepared object as the JSON outputs report it: file, points, kernel, sampling radius,
-/// preprocessing time.
+/// A prepared object as the JSON outputs report it: file, points, kernel, surface fit, the
+/// hierarchy's leaf size, sampling radius, preprocessing time.
 template <class Object>
 nlohmann::ordered_json object_json(const std::string& file, const Prepared_object<Object>& prepared)
 {
     return {{"file", file},
             {"points", prepared.object.size()},
             {"kernel", kernel_name<Object>()},
+            {"surface_fit", PCCD::to_string(prepared.object.surface().fit())},
+            {"leaf_size", prepared.object.hierarchy().leaf_size()},
             {"sampling_radius", prepared.object.sampling_radius()},
             {"preprocess_ms", prepared.preprocess_ms}};
 }
@@ -190,20 +194,93 @@ inline nlohmann::ordered_json vector_json(const Eigen::Vector3d& v)
     return {v.x(), v.y(), v.z()};
 }
 
-/// Preprocesses the points with Point_cloud_object's defaults (the hierarchy's bounding volume
-/// named `volume`); normals, when present, are hints that orient the object's normals (as `pccd
-/// eval` does).
+/// What the query commands let the user choose of the objects' preprocessing
+/// (doc/manual/cli_collide.md, "Preprocessing options"): the hierarchy's bounding volume
+/// (`--volume`, on the commands that take it) and leaf size (`--leaf-size`), and the surface
+/// (`--surface default|sharp`: the library's defaults or PCCD::sharp_feature_options()).
+struct Object_settings {
+    std::string volume = "box_and_slab";
+    /// A whole number >= 1, or "auto".
+    std::string leaf_size = "auto";
+    std::string surface = "default";
+};
+
+/// `--leaf-size auto` keeps the library's leaf size (8) below this many points of an object and
+/// uses auto_large_leaf_size from here: with leaves of 8, median splits of 10^7 points leave 4.8
+/// points per leaf; leaves of 10 leave 9.5 and answer first-hit queries 8 % faster
+/// (doc/benchmarks.md, "The leaf size").
+inline constexpr std::size_t auto_large_leaf_from_points = 1000000;
+inline constexpr std::size_t auto_large_leaf_size = 10;
+
+/// The leaf size `settings` choose for an object of `points` points.
+/// \throws PCCD::Invalid_input when --leaf-size is neither "auto" nor a whole number >= 1.
+inline std::size_t leaf_size_for(const Object_settings& settings, std::size_t points)
+{
+    if (settings.leaf_size == "auto")
+        return points >= auto_large_leaf_from_points ? auto_large_leaf_size
+                                                     : PCCD::Point_cloud_hierarchy_options{}.leaf_size;
+    const std::string& text = settings.leaf_size;
+    const bool digits = !text.empty() && text.size() <= 9 &&
+                        std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+    const std::size_t value = digits ? std::stoul(text) : 0;
+    if (value == 0)
+        throw PCCD::Invalid_input("--leaf-size must be auto or a whole number >= 1, not \"" + text + "\"");
+    return value;
+}
+
+/// The preprocessing options `settings` choose for an object of `points` points.
+/// \throws PCCD::Invalid_input on a bad --volume, --leaf-size or --surface.
+inline PCCD::Point_cloud_object_options object_options(const Object_settings& settings, std::size_t points)
+{
+    PCCD::Point_cloud_object_options options;
+    if (settings.surface == "sharp")
+        options = PCCD::sharp_feature_options(options);
+    else if (settings.surface != "default")
+        throw PCCD::Invalid_input("--surface must be default or sharp, not \"" + settings.surface + "\"");
+    options.hierarchy.volume = volume_from_name(settings.volume);
+    options.hierarchy.leaf_size = leaf_size_for(settings, points);
+    return options;
+}
+
+/// Adds --leaf-size and --surface (and --volume when `with_volume`) to a command.
+inline void add_object_settings(CLI::App* cmd, Object_settings& settings, bool with_volume)
+{
+    if (with_volume)
+        cmd->add_option("--volume", settings.volume,
+                        "Bounding volume of the hierarchies' node tests: box_and_slab (default), box or sphere")
+            ->check(CLI::IsMember(volume_names()));
+    cmd->add_option("--leaf-size", settings.leaf_size,
+                    "Largest number of points in a hierarchy leaf: a whole number >= 1, or auto (default: 8, and 10 "
+                    "for an object of 10^6 points or more)")
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                try {
+                    (void)leaf_size_for(Object_settings{.leaf_size = text}, 0);
+                    return std::string();
+                } catch (const PCCD::Invalid_input& e) {
+                    const std::string message = e.what(), prefix = "--leaf-size ";
+                    return message.starts_with(prefix) ? message.substr(prefix.size()) : message;
+                }
+            },
+            "auto|N"));
+    cmd->add_option("--surface", settings.surface,
+                    "The implicit surface: default (the sphere fit) or sharp (the sharp-feature options for CAD parts: "
+                    "IMLS fit, theta_eps 3e-5, robust normal refit)")
+        ->check(CLI::IsMember({"default", "sharp"}));
+}
+
+/// Preprocesses the points with the options `settings` choose (Point_cloud_object's defaults
+/// unless told otherwise); normals, when present, are hints that orient the object's normals (as
+/// `pccd eval` does).
 /// \throws PCCD::Invalid_input, naming `name`, when no point has a normal: the points are too few
 ///         or too degenerate (e.g. all on one line) to make a surface, and every query would answer
-///         "separate" without looking.
+///         "separate" without looking; and as object_options() on bad settings.
 template <class Object = PCCD::Point_cloud_object<>>
 Prepared_object<Object> prepare_object(const Object_points& input, const std::string& name,
-                                       const std::string& volume = "box_and_slab")
+                                       const Object_settings& settings = {})
 {
     const Clock::time_point start = Clock::now();
-    PCCD::Point_cloud_object_options options;
-    options.hierarchy.volume = volume_from_name(volume);
-    Object object(input, with_progress(options, name));
+    Object object(input, with_progress(object_options(settings, input.points.size()), name));
     if (object.orientation().unoriented == object.size())
         throw PCCD::Invalid_input(name + ": no point has a surface normal: its " + std::to_string(object.size()) +
                                   " points are too few or too degenerate (e.g. all on one line) to make a surface");

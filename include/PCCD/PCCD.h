@@ -76,6 +76,7 @@
 #include <PCCD/Surface/surface_options.h>
 #include <PCCD/Surface/surface_domain.h>
 #include <PCCD/make_point_cloud_object.h>
+#include <PCCD/sharp_feature_options.h>
 
 // Hierarchy and intersection queries
 #include <PCCD/Hierarchy/Point_cloud_hierarchy.h>

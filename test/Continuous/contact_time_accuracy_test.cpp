@@ -40,7 +40,7 @@
 #include <PCCD/Exact/mesh_intersection.h>
 #include <PCCD/testing/pose_generator.h>
 #include <PCCD/testing/scan_validation.h>
-#include <PCCD/testing/sharp_feature_options.h>
+#include <PCCD/sharp_feature_options.h>
 
 #include <algorithm>
 #include <cmath>
@@ -283,7 +283,7 @@ int main(int argc, char** argv)
         return 2;
     }
     const PCCD::Point_cloud_object_options object_options =
-        sharp ? PCCD::testing::sharp_feature_options() : PCCD::Point_cloud_object_options{};
+        sharp ? PCCD::sharp_feature_options() : PCCD::Point_cloud_object_options{};
     const std::string dir = PCCD_DATA_DIR;
     if (dir.empty() || !std::ifstream(dir + "/" + scanned_models.front())) {
         std::printf("the meshes of libcgal-demo are not in PCCD_DATA_DIR (\"%s\"): contact time accuracy skipped\n", dir.c_str());

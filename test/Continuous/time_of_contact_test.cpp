@@ -18,7 +18,7 @@
 #include <PCCD/Proximity/internal/surface_gap.h>
 #include <PCCD/Random.h>
 #include <PCCD/testing/pose_generator.h>
-#include <PCCD/testing/sharp_feature_options.h>
+#include <PCCD/sharp_feature_options.h>
 
 #include <cmath>
 #include <limits>
@@ -68,7 +68,7 @@ const Object& imls_torus()
 {
     static const Object t = [] {
         const auto s = pccd_test::sample_shape(pccd_test::test_torus(), 3000, 0.0, 44);
-        return Object(pccd_test::columns(s.points), PCCD::testing::sharp_feature_options());
+        return Object(pccd_test::columns(s.points), PCCD::sharp_feature_options());
     }();
     return t;
 }
@@ -77,7 +77,7 @@ const Object& imls_sphere()
 {
     static const Object u = [] {
         const auto s = pccd_test::sample_shape(pccd_test::unit_sphere(), 3000, 0.0, 41);
-        return Object(pccd_test::columns(s.points), PCCD::testing::sharp_feature_options());
+        return Object(pccd_test::columns(s.points), PCCD::sharp_feature_options());
     }();
     return u;
 }

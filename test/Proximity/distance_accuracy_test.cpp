@@ -36,7 +36,7 @@
 #include <PCCD/Exact/mesh_distance.h>
 #include <PCCD/Proximity/distance.h>
 #include <PCCD/testing/scan_validation.h>
-#include <PCCD/testing/sharp_feature_options.h>
+#include <PCCD/sharp_feature_options.h>
 
 #include <algorithm>
 #include <cmath>
@@ -206,7 +206,7 @@ Cloud area_cloud(const PCCD::testing::Scan_model& model, double noise, std::uint
     c.spacing = model.clean_spacing;
     c.sampling_radius = model.clean_r;
     c.object = PCCD::testing::make_scan_cloud(model, {c.name, 1.0, noise, 0.0}, seed,
-                                              sharp ? PCCD::testing::sharp_feature_options() : PCCD::Point_cloud_object_options{})
+                                              sharp ? PCCD::sharp_feature_options() : PCCD::Point_cloud_object_options{})
                    .object;
     return c;
 }

@@ -13,7 +13,7 @@
 #include <PCCD/Surface/estimate_normals.h>
 #include <PCCD/sample_triangle_mesh.h>
 
-#include <PCCD/testing/sharp_feature_options.h>
+#include <PCCD/sharp_feature_options.h>
 #include <PCCD/testing/statistics.h>
 
 #include <catch2/catch.hpp>
@@ -388,12 +388,35 @@ TEST_CASE("on a sampled cube the IMLS fit keeps the corners and edges the other 
     };
     const double default_median = object_median(by_default), sharp_median = object_median(sharp);
     // The sharp-feature options as documented: normals refitted robustly instead of narrower.
-    const PCCD::Point_cloud_object<> robust(points, {}, PCCD::testing::sharp_feature_options());
+    const PCCD::Point_cloud_object<> robust(points, {}, PCCD::sharp_feature_options());
     const double robust_median = object_median(robust);
     INFO("objects: median |f| at corners and edges, sphere " << default_median << ", imls " << sharp_median
                                                                << ", imls with robust normals " << robust_median);
     CHECK(sharp_median < 0.5 * default_median);
     CHECK(robust_median < 0.5 * default_median);
+}
+
+TEST_CASE("sharp_feature_options sets the sharp-feature fields and keeps the others", "[surface]")
+{
+    const PCCD::Point_cloud_object_options defaults;
+    const PCCD::Point_cloud_object_options sharp = PCCD::sharp_feature_options();
+    CHECK(defaults.surface_fit == PCCD::Surface_fit::sphere);
+    CHECK(sharp.surface_fit == PCCD::Surface_fit::imls);
+    CHECK(sharp.bandwidth.theta_eps == 3e-5);
+    REQUIRE(sharp.normal_residual_scale.has_value());
+    CHECK(*sharp.normal_residual_scale == 0.25);
+    CHECK(sharp.bandwidth.eta == defaults.bandwidth.eta);
+    CHECK(sharp.normal_bandwidth == defaults.normal_bandwidth);
+    PCCD::Point_cloud_object_options base;
+    base.hierarchy.leaf_size = 10;
+    base.bandwidth.eta = 4.0;
+    base.threads = 1u;
+    const PCCD::Point_cloud_object_options kept = PCCD::sharp_feature_options(base);
+    CHECK(kept.hierarchy.leaf_size == 10);
+    CHECK(kept.bandwidth.eta == 4.0);
+    CHECK(kept.threads == std::optional<unsigned>(1u));
+    CHECK(kept.surface_fit == PCCD::Surface_fit::imls);
+    CHECK(kept.bandwidth.theta_eps == 3e-5);
 }
 
 TEST_CASE("refit_normals sharpens normals across edges and keeps their orientation", "[surface]")

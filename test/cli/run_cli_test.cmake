@@ -143,6 +143,47 @@ elseif(CASE STREQUAL "collide_volume")
   endforeach()
   pccd_run(OK ARGS info sphere.xyz --json MATCH "\"volume\": \"box_and_slab\"")
   pccd_run(FAIL ARGS collide sphere.xyz sphere.xyz --volume cube MATCH "--volume")
+elseif(CASE STREQUAL "object_options")
+  # --leaf-size and --surface on the query commands: the JSON names what was built (leaves of 8 and
+  # the sphere fit by default, auto keeping 8 below 10^6 points); the sharp-feature surface with
+  # leaves of 10 keeps the verdicts on surfaces that overlap by 1 and lie 1 apart, and the distance
+  # of the latter (the sphere and the torus of make_cli_data); bad values are refused before any work.
+  pccd_run(OK ARGS distance sphere.xyz torus.ply --transform-b ${shift_3} --json
+           MATCH "\"surface_fit\": \"sphere\"" "\"leaf_size\": 8,")
+  pccd_run(OK ARGS distance sphere.xyz torus.ply --transform-b ${shift_3} --json --leaf-size auto
+           MATCH "\"leaf_size\": 8,")
+  pccd_run(OK ARGS distance sphere.xyz torus.ply --transform-b ${shift_3} --json --leaf-size 10 --surface sharp
+           MATCH "\"surface_fit\": \"imls\"" "\"leaf_size\": 10," "\"status\": \"separate\"")
+  pccd_json_number(distance "${PCCD_STDOUT}" distance)
+  pccd_expect_between(${distance} 0.97 1.03 "the sharp-feature surfaces' distance of surfaces 1 apart")
+  foreach(volume box_and_slab sphere)
+    pccd_run(OK ARGS collide sphere.xyz sphere.xyz --transform-b ${shift_1} --leaf-size 3 --surface sharp
+                     --volume ${volume} --json
+             MATCH "\"intersects\": true" "\"leaf_size\": 3," "\"surface_fit\": \"imls\"")
+  endforeach()
+  pccd_run(OK ARGS collide sphere.xyz torus.ply --transform-b ${shift_3} --leaf-size 16 --json
+           MATCH "\"intersects\": false" "\"leaf_size\": 16,")
+  pccd_run(OK ARGS world --generate sphere.xyz:4 --scene-seed 3 --leaf-size 5 --surface sharp --json
+           MATCH "\"leaf_size\": 5," "\"surface_fit\": \"imls\"")
+  pccd_run(OK ARGS contact-time sphere.xyz sphere.xyz --from-b 1,0,0,4,0,1,0,0,0,0,1,0 --to-b 1,0,0,-4,0,1,0,0,0,0,1,0
+                   --surface sharp --leaf-size 10 --json
+           MATCH "\"status\": \"contact\"")
+  pccd_json_number(t "${PCCD_STDOUT}" t)
+  pccd_expect_between(${t} 0.235 0.265 "the sharp-feature surfaces' contact time of unit spheres meeting at t = 0.25")
+  # The unit sphere past a copy of itself, gaps 2 and 0.25: the second pose is the first below 0.6.
+  file(WRITE ${WORK}/object_options_path.csv "1,0,0,4,0,1,0,0,0,0,1,0\n1,0,0,2.25,0,1,0,0,0,0,1,0\n")
+  pccd_run(OK ARGS clearance sphere.xyz sphere.xyz --path object_options_path.csv --margin 0.6 --surface sharp
+                   --leaf-size 12 --json
+           MATCH "\"poses\": 2," "\"first_below_margin\": 1," "\"leaf_size\": 12," "\"surface_fit\": \"imls\"")
+  foreach(command "collide;no_such_cloud.xyz;no_such_cloud.xyz" "distance;no_such_cloud.xyz;no_such_cloud.xyz"
+                  "clearance;no_such_cloud.xyz;no_such_cloud.xyz;--path;object_options_path.csv;--margin;1"
+                  "world;--generate;no_such_cloud.xyz:2" "contact-time;no_such_cloud.xyz;no_such_cloud.xyz"
+                  "bench;no_such_cloud.xyz")
+    foreach(bad 0 -1 x 1e3 2.5)
+      pccd_run(FAIL ARGS ${command} --leaf-size ${bad} MATCH "--leaf-size" NO_MATCH "no_such_cloud")
+    endforeach()
+    pccd_run(FAIL ARGS ${command} --surface round MATCH "--surface" NO_MATCH "no_such_cloud")
+  endforeach()
 elseif(CASE STREQUAL "kernel_option")
   # --kernel on collide, distance and world: the lean object (euclidean) gives the same verdicts and the
   # distance of surfaces 1 apart; auto picks the geodesic object below 10^6 points; a bad name is
