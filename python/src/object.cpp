@@ -9,6 +9,7 @@
 
 #include <PCCD/Error.h>
 #include <PCCD/Intersection/do_intersect_many.h>
+#include <PCCD/sharp_feature_options.h>
 
 #include <cstddef>
 #include <functional>
@@ -93,6 +94,8 @@ PCCD::Point_cloud_object_options object_options(const py::kwargs& kwargs)
         {"leaf_size", [](auto& o, const py::handle& v, const std::string& k) { o.hierarchy.leaf_size = option_value<std::size_t>(v, k); }},
         {"volume", [](auto& o, const py::handle& v, const std::string& k) { o.hierarchy.volume = volume_of(option_value<std::string>(v, k), "Object()"); }},
         {"spatial_order", [](auto& o, const py::handle& v, const std::string& k) { o.spatial_order = option_value<bool>(v, k); }},
+        // Applied before every other keyword (below), so that those override its fields in any order.
+        {"sharp_features", [](auto&, const py::handle& v, const std::string& k) { (void)option_value<bool>(v, k); }},
         {"threads",
          [](auto& o, const py::handle& v, const std::string& k) {
              o.threads = option_value<std::optional<unsigned>>(v, k);
@@ -102,6 +105,8 @@ PCCD::Point_cloud_object_options object_options(const py::kwargs& kwargs)
          }},
     };
     PCCD::Point_cloud_object_options options;
+    if (kwargs.contains("sharp_features") && option_value<bool>(kwargs["sharp_features"], "sharp_features"))
+        options = PCCD::sharp_feature_options(options);
     for (const auto& [key, value] : kwargs) {
         const std::string name = py::str(key);
         const auto setter = setters.find(name);
@@ -201,6 +206,10 @@ normals : array_like, optional
     surface_fit : {'sphere', 'plane', 'imls'}
         Local shape of the surface fit (default 'sphere'); 'imls' keeps sharp edges (with
         normal_residual_scale=0.25 and theta_eps=3e-5 for parts with sharp edges).
+    sharp_features : bool
+        True: the sharp-feature options for CAD parts in one keyword (surface_fit='imls',
+        theta_eps=3e-5, normal_residual_scale=0.25; C++ PCCD::sharp_feature_options()), applied
+        before the other keywords, which override its fields. Default False.
     normal_bandwidth : float
         Refit the oriented normals with this fraction of the kernel, in (0, 1] (default 1: no
         refit).
@@ -357,6 +366,10 @@ OSError
         .def_property_readonly("support_radius", [](const Object& o) { return o.weight().support_radius(); },
                                "float: The kernel's support radius R = h sqrt(-ln theta_eps).")
         .def_property_readonly("theta_eps", &Object::theta_eps, "float: The kernel's weight threshold.")
+        .def_property_readonly("surface_fit", [](const Object& o) { return std::string(PCCD::to_string(o.surface().fit())); },
+                               "str: The surface's local fit: 'sphere', 'plane' or 'imls'.")
+        .def_property_readonly("leaf_size", [](const Object& o) { return o.hierarchy().leaf_size(); },
+                               "int: The hierarchy's largest number of points in a leaf.")
         .def_property_readonly("eta", &Object::eta, "float: R / r(P).")
         .def_property_readonly("noise_estimate", &Object::noise_estimate, "float: The estimated noise level sigma.")
         .def_property_readonly("normals_given", &Object::normals_given, "bool: Whether normals were given as hints.")

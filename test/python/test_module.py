@@ -119,6 +119,26 @@ def test_the_imls_surface_keeps_a_sphere_and_answers_like_the_default():
         assert pccd.do_intersect(sharp, None, sharp, t).intersects == expected
 
 
+def test_sharp_features_sets_the_sharp_feature_options_and_other_keywords_override_them():
+    """sharp_features=True is surface_fit='imls', theta_eps=3e-5, normal_residual_scale=0.25 (the
+    C++ PCCD::sharp_feature_options()); an explicit keyword wins in either order; a non-bool is
+    refused."""
+    p = sphere_points(600)
+    default = pccd.Object(p, threads=1)
+    assert default.surface_fit == "sphere" and default.leaf_size == 8
+    sharp = pccd.Object(p, sharp_features=True, threads=1)
+    by_hand = pccd.Object(p, surface_fit="imls", theta_eps=3e-5, normal_residual_scale=0.25, threads=1)
+    assert sharp.surface_fit == "imls" and sharp.theta_eps == pytest.approx(3e-5)
+    assert np.array_equal(sharp.normals, by_hand.normals)
+    assert sharp.bandwidth == by_hand.bandwidth
+    for kwargs in ({"theta_eps": 1e-2, "sharp_features": True}, {"sharp_features": True, "theta_eps": 1e-2}):
+        o = pccd.Object(p, leaf_size=10, threads=1, **kwargs)
+        assert o.surface_fit == "imls" and o.theta_eps == pytest.approx(1e-2) and o.leaf_size == 10
+    assert pccd.Object(p, sharp_features=False, threads=1).surface_fit == "sphere"
+    with pytest.raises(TypeError, match="sharp_features"):
+        pccd.Object(p, sharp_features="yes")
+
+
 # --- Object: inputs read in place, properties ---------------------------------------------------
 
 def test_float32_strided_and_integer_inputs_give_the_same_object():
