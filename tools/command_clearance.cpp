@@ -42,6 +42,7 @@ struct Clearance_cli_options {
     std::string relative_tolerance; // empty: 0
     std::string budget_us;          // empty or 0: none
     std::string kernel = "auto";    // auto, geodesic or euclidean
+    std::string kernel_object;      // empty: as --kernel
     Object_settings object;
     std::size_t max_node_pairs = 0; // 0: none
     bool certified_lower_bound = false;
@@ -183,15 +184,21 @@ void write_profile_png(const PCCD::Clearance_profile& p, const std::string& file
     pccd_render::write_png(file, pccd_render::plot_profile(plot, 800, 480));
 }
 
-/// The clearance of the object's points (`clouds.a`) along `poses` through the scene's (`clouds.b`;
-/// the same object when `clouds.same`), both preprocessed into an `Object`, and its output.
-template <class Object>
+/// The clearance of the object's points (`clouds.a`, preprocessed into an `Object`) along `poses`
+/// through the scene's (`clouds.b`, into a `Scene`; the same object when `clouds.same` and the two
+/// types agree), and its output.
+template <class Object, class Scene>
 void run_clearance_with(const Clearance_cli_options& o, double margin, const PCCD::Clearance_options& options,
                         const std::vector<PCCD::Rigid_transform_3<double>>& poses, const Two_clouds& clouds)
 {
-    const bool same = clouds.same;
+    constexpr bool one_type = std::is_same_v<Object, Scene>;
+    const bool same = clouds.same && one_type;
     const Prepared_object<Object> object = prepare_object<Object>(clouds.a, o.file_object, o.object);
-    const Prepared_object<Object> scene = same ? object : prepare_object<Object>(*clouds.b, o.file_scene, o.object);
+    const Prepared_object<Scene> scene = [&] {
+        if constexpr (one_type)
+            if (same) return object;
+        return prepare_object<Scene>(clouds.same ? clouds.a : *clouds.b, o.file_scene, o.object);
+    }();
 
     const Clock::time_point start = Clock::now();
     const PCCD::Clearance_profile p = PCCD::clearance(object.object, scene.object, poses, margin, options);
@@ -214,9 +221,9 @@ void run_clearance_with(const Clearance_cli_options& o, double margin, const PCC
         std::cout << r.dump(2) << '\n';
         return;
     }
-    const auto object_line = [](const char* name, const std::string& file, const Prepared_object<Object>& prepared) {
+    const auto object_line = []<class T>(const char* name, const std::string& file, const Prepared_object<T>& prepared) {
         std::printf("%s: %s, %zu points, %s kernel, r(P) %.5g, preprocessed in %.1f ms\n", name, file.c_str(),
-                    prepared.object.size(), kernel_name<Object>(), prepared.object.sampling_radius(), prepared.preprocess_ms);
+                    prepared.object.size(), kernel_name<T>(), prepared.object.sampling_radius(), prepared.preprocess_ms);
     };
     object_line("object", o.file_object, object);
     if (same)
@@ -265,8 +272,12 @@ void run_clearance(const Clearance_cli_options& o)
     const PCCD::Clearance_options options = clearance_options(o, margin);
     const std::vector<PCCD::Rigid_transform_3<double>> poses = read_path(o.path, o.orthonormalize);
     const Two_clouds clouds = read_two_clouds(o.file_object, o.file_scene, false);
-    with_kernel(o.kernel, clouds.largest(), [&]<class Object>(std::type_identity<Object>) {
-        run_clearance_with<Object>(o, margin, options, poses, clouds);
+    // --kernel-object, when given, overrides --kernel for the moving object alone.
+    const std::string& object_kernel = o.kernel_object.empty() ? o.kernel : o.kernel_object;
+    with_kernel(o.kernel, clouds.largest(), [&]<class Scene>(std::type_identity<Scene>) {
+        with_kernel(object_kernel, clouds.largest(), [&]<class Object>(std::type_identity<Object>) {
+            run_clearance_with<Object, Scene>(o, margin, options, poses, clouds);
+        });
     });
 }
 
@@ -303,6 +314,10 @@ void register_clearance(CLI::App& app)
     cmd->add_flag("--penetration", o->penetration, "For intersecting poses, also measure the penetration depth (depth)");
     add_object_settings(cmd, o->object, false);
     cmd->add_option("--kernel", o->kernel, kernel_option_help())
+        ->check(CLI::IsMember({"auto", "geodesic", "euclidean"}));
+    cmd->add_option("--kernel-object", o->kernel_object,
+                    "The moving object's kernel alone, overriding --kernel for it: auto, geodesic or euclidean (e.g. "
+                    "geodesic for a part with sharp edges, whose edges it rounds less, beside a lean scene)")
         ->check(CLI::IsMember({"auto", "geodesic", "euclidean"}));
     cmd->add_option("--seed", o->seed, "Seed of the queries (default 24301 = 0x5eed; pose i gets pair_seed(seed, i))");
     cmd->add_option("--threads", o->threads, "Worker threads (default 0: all available); the answers do not depend on it");

@@ -175,6 +175,19 @@ elseif(CASE STREQUAL "object_options")
   pccd_run(OK ARGS clearance sphere.xyz sphere.xyz --path object_options_path.csv --margin 0.6 --surface sharp
                    --leaf-size 12 --json
            MATCH "\"poses\": 2," "\"first_below_margin\": 1," "\"leaf_size\": 12," "\"surface_fit\": \"imls\"")
+  # --kernel-object: a geodesic moving object beside a lean scene (the same file, built twice).
+  pccd_run(OK ARGS clearance sphere.xyz sphere.xyz --path object_options_path.csv --margin 0.6 --kernel euclidean
+                   --kernel-object geodesic --json
+           MATCH "\"poses\": 2," "\"first_below_margin\": 1,")
+  string(JSON object_kernel GET "${PCCD_STDOUT}" object kernel)
+  string(JSON scene_kernel GET "${PCCD_STDOUT}" scene kernel)
+  string(JSON gap GET "${PCCD_STDOUT}" samples 1 clearance)
+  if(NOT object_kernel STREQUAL "geodesic" OR NOT scene_kernel STREQUAL "euclidean")
+    message(FATAL_ERROR "--kernel-object geodesic --kernel euclidean built ${object_kernel} and ${scene_kernel}")
+  endif()
+  pccd_expect_between(${gap} 0.21 0.29 "the mixed pair's clearance of spheres 0.25 apart")
+  pccd_run(FAIL ARGS clearance sphere.xyz sphere.xyz --path object_options_path.csv --margin 0.6 --kernel-object lean
+           MATCH "--kernel-object")
   foreach(command "collide;no_such_cloud.xyz;no_such_cloud.xyz" "distance;no_such_cloud.xyz;no_such_cloud.xyz"
                   "clearance;no_such_cloud.xyz;no_such_cloud.xyz;--path;object_options_path.csv;--margin;1"
                   "world;--generate;no_such_cloud.xyz:2" "contact-time;no_such_cloud.xyz;no_such_cloud.xyz"
