@@ -212,6 +212,15 @@ struct Object_settings {
 inline constexpr std::size_t auto_large_leaf_from_points = 1000000;
 inline constexpr std::size_t auto_large_leaf_size = 10;
 
+/// What --leaf-size accepts besides "auto": a whole number >= 1 of at most 9 digits, or nullopt.
+inline std::optional<std::size_t> parse_leaf_size(const std::string& text)
+{
+    const bool digits = !text.empty() && text.size() <= 9 &&
+                        std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+    const std::size_t value = digits ? std::stoul(text) : 0;
+    return value >= 1 ? std::optional<std::size_t>(value) : std::nullopt;
+}
+
 /// The leaf size `settings` choose for an object of `points` points.
 /// \throws PCCD::Invalid_input when --leaf-size is neither "auto" nor a whole number >= 1.
 inline std::size_t leaf_size_for(const Object_settings& settings, std::size_t points)
@@ -219,13 +228,8 @@ inline std::size_t leaf_size_for(const Object_settings& settings, std::size_t po
     if (settings.leaf_size == "auto")
         return points >= auto_large_leaf_from_points ? auto_large_leaf_size
                                                      : PCCD::Point_cloud_hierarchy_options{}.leaf_size;
-    const std::string& text = settings.leaf_size;
-    const bool digits = !text.empty() && text.size() <= 9 &&
-                        std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
-    const std::size_t value = digits ? std::stoul(text) : 0;
-    if (value == 0)
-        throw PCCD::Invalid_input("--leaf-size must be auto or a whole number >= 1, not \"" + text + "\"");
-    return value;
+    if (const auto value = parse_leaf_size(settings.leaf_size)) return *value;
+    throw PCCD::Invalid_input("--leaf-size must be auto or a whole number >= 1, not \"" + settings.leaf_size + "\"");
 }
 
 /// The preprocessing options `settings` choose for an object of `points` points.
@@ -254,13 +258,9 @@ inline void add_object_settings(CLI::App* cmd, Object_settings& settings, bool w
                     "for an object of 10^6 points or more)")
         ->check(CLI::Validator(
             [](std::string& text) {
-                try {
-                    (void)leaf_size_for(Object_settings{.leaf_size = text}, 0);
-                    return std::string();
-                } catch (const PCCD::Invalid_input& e) {
-                    const std::string message = e.what(), prefix = "--leaf-size ";
-                    return message.starts_with(prefix) ? message.substr(prefix.size()) : message;
-                }
+                return text == "auto" || parse_leaf_size(text)
+                           ? std::string()
+                           : "must be auto or a whole number >= 1, not \"" + text + "\"";
             },
             "auto|N"));
     cmd->add_option("--surface", settings.surface,
