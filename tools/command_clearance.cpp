@@ -191,14 +191,10 @@ template <class Object, class Scene>
 void run_clearance_with(const Clearance_cli_options& o, double margin, const PCCD::Clearance_options& options,
                         const std::vector<PCCD::Rigid_transform_3<double>>& poses, const Two_clouds& clouds)
 {
-    constexpr bool one_type = std::is_same_v<Object, Scene>;
-    const bool same = clouds.same && one_type;
-    const Prepared_object<Object> object = prepare_object<Object>(clouds.a, o.file_object, o.object);
-    const Prepared_object<Scene> scene = [&] {
-        if constexpr (one_type)
-            if (same) return object;
-        return prepare_object<Scene>(clouds.same ? clouds.a : *clouds.b, o.file_scene, o.object);
-    }();
+    const Prepared_pair<Object, Scene> objects = prepare_pair<Object, Scene>(clouds, o.file_object, o.file_scene, o.object);
+    const Prepared_object<Object>& object = objects.a;
+    const Prepared_object<Scene>& scene = objects.b;
+    const bool same = objects.shared;
 
     const Clock::time_point start = Clock::now();
     const PCCD::Clearance_profile p = PCCD::clearance(object.object, scene.object, poses, margin, options);
@@ -272,12 +268,10 @@ void run_clearance(const Clearance_cli_options& o)
     const PCCD::Clearance_options options = clearance_options(o, margin);
     const std::vector<PCCD::Rigid_transform_3<double>> poses = read_path(o.path, o.orthonormalize);
     const Two_clouds clouds = read_two_clouds(o.file_object, o.file_scene, false);
-    // --kernel-object, when given, overrides --kernel for the moving object alone.
-    const std::string& object_kernel = o.kernel_object.empty() ? o.kernel : o.kernel_object;
-    with_kernel(o.kernel, clouds.largest(), [&]<class Scene>(std::type_identity<Scene>) {
-        with_kernel(object_kernel, clouds.largest(), [&]<class Object>(std::type_identity<Object>) {
-            run_clearance_with<Object, Scene>(o, margin, options, poses, clouds);
-        });
+    // --kernel-object, when given, overrides --kernel for the moving object alone; auto decides by
+    // each object's own size.
+    with_kernels(o.kernel, o.kernel_object, "", clouds, [&]<class Object, class Scene>(std::type_identity<Object>, std::type_identity<Scene>) {
+        run_clearance_with<Object, Scene>(o, margin, options, poses, clouds);
     });
 }
 
@@ -313,12 +307,11 @@ void register_clearance(CLI::App& app)
                   "whatever the fit; 13-27 % more time) instead of minus r(P) + 2 sigma per surface");
     cmd->add_flag("--penetration", o->penetration, "For intersecting poses, also measure the penetration depth (depth)");
     add_object_settings(cmd, o->object, false);
-    cmd->add_option("--kernel", o->kernel, kernel_option_help())
-        ->check(CLI::IsMember({"auto", "geodesic", "euclidean"}));
+    cmd->add_option("--kernel", o->kernel, kernel_option_help())->check(CLI::IsMember(kernel_names()));
     cmd->add_option("--kernel-object", o->kernel_object,
                     "The moving object's kernel alone, overriding --kernel for it: auto, geodesic or euclidean (e.g. "
                     "geodesic for a part with sharp edges, whose edges it rounds less, beside a lean scene)")
-        ->check(CLI::IsMember({"auto", "geodesic", "euclidean"}));
+        ->check(CLI::IsMember(kernel_names()));
     cmd->add_option("--seed", o->seed, "Seed of the queries (default 24301 = 0x5eed; pose i gets pair_seed(seed, i))");
     cmd->add_option("--threads", o->threads, "Worker threads (default 0: all available); the answers do not depend on it");
     cmd->add_flag("--orthonormalize", o->orthonormalize,

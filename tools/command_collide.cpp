@@ -51,6 +51,7 @@ struct Collide_options {
     Object_settings object;
     std::string png;
     std::string kernel = "auto"; // auto, geodesic or euclidean
+    std::string kernel_a, kernel_b; // empty: as --kernel
 };
 
 void print_summary(const nlohmann::ordered_json& r)
@@ -82,18 +83,19 @@ void print_summary(const nlohmann::ordered_json& r)
     if (r.contains("first_point")) std::printf("first point: %s\n", r["first_point"].dump().c_str());
 }
 
-/// The query (or the cases) on the points of A and B, each preprocessed into an `Object` (B is A
-/// when `same`), and its output.
-template <class Object>
+/// The query (or the cases) on the points of A and B, preprocessed into an `A` and a `B` (once when
+/// both name the same file with the same kernel), and its output.
+template <class A, class B>
 void run_collide_with(const Collide_options& o, const PCCD::Intersection_options& query_options,
                       const Query_poses& poses, const Two_clouds& clouds)
 {
     const bool first_hit = o.mode == "first";
-    const bool same = clouds.same;
     const auto& [cases, pose_a, pose_b] = poses;
-    const Prepared_object<Object> a = prepare_object<Object>(clouds.a, o.file_a, o.object);
-    const Prepared_object<Object> b = same ? a : prepare_object<Object>(*clouds.b, o.file_b, o.object);
-    const double preprocess_ms = a.preprocess_ms + (same ? 0.0 : b.preprocess_ms);
+    const Prepared_pair<A, B> objects = prepare_pair<A, B>(clouds, o.file_a, o.file_b, o.object);
+    const Prepared_object<A>& a = objects.a;
+    const Prepared_object<B>& b = objects.b;
+    const bool same = objects.shared;
+    const double preprocess_ms = objects.preprocess_ms();
 
     if (cases) {
         std::printf("case,intersects,f_evaluations,query_us,points\n");
@@ -167,8 +169,8 @@ void run_collide(const Collide_options& o)
     // Everything is read and checked before the (slow) preprocessing.
     const Query_poses poses = read_query_poses(o.cases, o.transform_a, o.transform_b, o.orthonormalize);
     const Two_clouds clouds = read_two_clouds(o.file_a, o.file_b, o.normalize);
-    with_kernel(o.kernel, clouds.largest(), [&]<class Object>(std::type_identity<Object>) {
-        run_collide_with<Object>(o, query_options, poses, clouds);
+    with_kernels(o.kernel, o.kernel_a, o.kernel_b, clouds, [&]<class A, class B>(std::type_identity<A>, std::type_identity<B>) {
+        run_collide_with<A, B>(o, query_options, poses, clouds);
     });
 }
 
@@ -205,8 +207,8 @@ void register_collide(CLI::App& app)
                     "first; default 0: none)")
         ->check(CLI::NonNegativeNumber);
     add_object_settings(cmd, o->object, true);
-    cmd->add_option("--kernel", o->kernel, kernel_option_help())
-        ->check(CLI::IsMember({"auto", "geodesic", "euclidean"}));
+    cmd->add_option("--kernel", o->kernel, kernel_option_help())->check(CLI::IsMember(kernel_names()));
+    add_object_kernels(cmd, o->kernel_a, o->kernel_b);
     auto* out = cmd->add_option("--out", o->out, "Write the intersection points to this file (.ply, .off, .xyz)");
     auto* json = cmd->add_flag("--json", o->json, "Print one JSON object instead of text");
     auto* png = cmd->add_option("--png", o->png,

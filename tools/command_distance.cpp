@@ -59,6 +59,7 @@ struct Distance_cli_options {
     std::string png;
     std::string cases;
     std::string kernel = "auto"; // auto, geodesic or euclidean
+    std::string kernel_a, kernel_b; // empty: as --kernel
     Object_settings object;
 };
 
@@ -252,17 +253,18 @@ pccd_render::Marker_layer segment_layer(const Eigen::Vector3d& p, const Eigen::V
     return layer;
 }
 
-/// The query (or the cases) on the points of A and B, each preprocessed into an `Object` (B is A
-/// when `same`), and its output.
-template <class Object>
+/// The query (or the cases) on the points of A and B, preprocessed into an `A` and a `B` (once when
+/// both name the same file with the same kernel), and its output.
+template <class A, class B>
 void run_distance_with(const Distance_cli_options& o, const PCCD::Distance_options& options,
                        const std::optional<double>& margin, const Query_poses& poses, const Two_clouds& clouds)
 {
-    const bool same = clouds.same;
     const auto& [cases, pose_a, pose_b] = poses;
-    const Prepared_object<Object> a = prepare_object<Object>(clouds.a, o.file_a, o.object);
-    const Prepared_object<Object> b = same ? a : prepare_object<Object>(*clouds.b, o.file_b, o.object);
-    const double preprocess_ms = a.preprocess_ms + (same ? 0.0 : b.preprocess_ms);
+    const Prepared_pair<A, B> objects = prepare_pair<A, B>(clouds, o.file_a, o.file_b, o.object);
+    const Prepared_object<A>& a = objects.a;
+    const Prepared_object<B>& b = objects.b;
+    const bool same = objects.shared;
+    const double preprocess_ms = objects.preprocess_ms();
 
     if (cases) {
         std::printf("case,status,distance,lower_bound,upper_bound,query_us\n");
@@ -363,8 +365,8 @@ void run_distance(const Distance_cli_options& o)
     if (!o.margin.empty()) margin = option_number(o.margin, "--margin", false);
     const Query_poses poses = read_query_poses(o.cases, o.transform_a, o.transform_b, o.orthonormalize);
     const Two_clouds clouds = read_two_clouds(o.file_a, o.file_b, o.normalize);
-    with_kernel(o.kernel, clouds.largest(), [&]<class Object>(std::type_identity<Object>) {
-        run_distance_with<Object>(o, options, margin, poses, clouds);
+    with_kernels(o.kernel, o.kernel_a, o.kernel_b, clouds, [&]<class A, class B>(std::type_identity<A>, std::type_identity<B>) {
+        run_distance_with<A, B>(o, options, margin, poses, clouds);
     });
 }
 
@@ -416,8 +418,8 @@ void register_distance(CLI::App& app)
     margin->excludes(contacts);
     cmd->add_option("--seed", o->seed, "Seed of the query (default 24301 = 0x5eed)");
     add_object_settings(cmd, o->object, false);
-    cmd->add_option("--kernel", o->kernel, kernel_option_help())
-        ->check(CLI::IsMember({"auto", "geodesic", "euclidean"}));
+    cmd->add_option("--kernel", o->kernel, kernel_option_help())->check(CLI::IsMember(kernel_names()));
+    add_object_kernels(cmd, o->kernel_a, o->kernel_b);
     auto* json = cmd->add_flag("--json", o->json,
                                "Print one JSON object, the result's fields named as in C++ (NaN and inf: null)");
     auto* png = cmd->add_option("--png", o->png,

@@ -136,14 +136,15 @@ nlohmann::ordered_json object_json(const std::string& file, const Prepared_objec
             {"preprocess_ms", prepared.preprocess_ms}};
 }
 
-/// `--kernel`: which object the points make. auto: the lean object (Euclidean kernel) when a cloud
-/// of the query has at least `lean_from_points` points, the geodesic one otherwise.
+/// `--kernel`: which object the points make. auto: the lean object (Euclidean kernel) when the
+/// cloud that decides (the object's own; `pccd world`: the largest file) has at least
+/// `lean_from_points` points, the geodesic one otherwise.
 inline constexpr std::size_t lean_from_points = 1000000;
-inline bool use_lean_kernel(const std::string& kernel, std::size_t largest_cloud)
+inline bool use_lean_kernel(const std::string& kernel, std::size_t points)
 {
     if (kernel == "euclidean") return true;
     if (kernel == "geodesic") return false;
-    return largest_cloud >= lean_from_points;
+    return points >= lean_from_points;
 }
 
 /// The two point files of a query command, each read once: `b` is empty when both name the same
@@ -152,9 +153,6 @@ struct Two_clouds {
     bool same = false;
     Object_points a;
     std::optional<Object_points> b;
-
-    /// The larger cloud's number of points (what `--kernel auto` decides by).
-    std::size_t largest() const { return std::max(a.points.size(), b ? b->points.size() : std::size_t(0)); }
 };
 
 inline Two_clouds read_two_clouds(const std::string& file_a, const std::string& file_b, bool normalize)
@@ -166,24 +164,58 @@ inline Two_clouds read_two_clouds(const std::string& file_a, const std::string& 
     return clouds;
 }
 
-/// Calls `run` with a tag of the object type `--kernel` chooses when the query's largest cloud has
-/// `largest_cloud` points: `run(std::type_identity<PCCD::Euclidean_point_cloud_object<>>{})` or the
-/// same with `PCCD::Point_cloud_object<>`.
+/// Calls `run` with a tag of the object type `kernel` chooses for a cloud of `points` points (for
+/// `auto`, the number that decides): `run(std::type_identity<PCCD::Euclidean_point_cloud_object<>>{})`
+/// or the same with `PCCD::Point_cloud_object<>`.
 template <class Run>
-void with_kernel(const std::string& kernel, std::size_t largest_cloud, Run&& run)
+void with_kernel(const std::string& kernel, std::size_t points, Run&& run)
 {
-    if (use_lean_kernel(kernel, largest_cloud))
+    if (use_lean_kernel(kernel, points))
         run(std::type_identity<PCCD::Euclidean_point_cloud_object<>>{});
     else
         run(std::type_identity<PCCD::Point_cloud_object<>>{});
+}
+
+/// The two objects' kernels: each object's own option (`kernel_a`, `kernel_b`; empty: not given)
+/// or else `kernel`, with `auto` decided by that object's own number of points, so that a small
+/// part beside a large scan keeps the geodesic kernel, which rounds its edges less
+/// (doc/benchmarks.md, "From the command line"). Calls `run(std::type_identity<A>{},
+/// std::type_identity<B>{})` with the two object types.
+template <class Run>
+void with_kernels(const std::string& kernel, const std::string& kernel_a, const std::string& kernel_b,
+                  const Two_clouds& clouds, Run&& run)
+{
+    const std::size_t points_a = clouds.a.points.size();
+    const std::size_t points_b = clouds.b ? clouds.b->points.size() : points_a;
+    with_kernel(kernel_a.empty() ? kernel : kernel_a, points_a, [&]<class A>(std::type_identity<A> tag_a) {
+        with_kernel(kernel_b.empty() ? kernel : kernel_b, points_b,
+                    [&]<class B>(std::type_identity<B> tag_b) { run(tag_a, tag_b); });
+    });
+}
+
+/// The names `--kernel` and the per-object kernel options accept.
+inline const std::vector<std::string>& kernel_names()
+{
+    static const std::vector<std::string> names{"auto", "geodesic", "euclidean"};
+    return names;
 }
 
 /// The help text of `--kernel`, one for every command that takes it.
 inline const char* kernel_option_help()
 {
     return "The objects' surface kernel: geodesic (Point_cloud_object), euclidean (the lean "
-           "Euclidean_point_cloud_object, about a fifth of the memory) or auto (default: euclidean when a "
-           "cloud has 10^6 points or more)";
+           "Euclidean_point_cloud_object, about a fifth of the memory) or auto (default: euclidean for an "
+           "object of 10^6 points or more, each object by its own size)";
+}
+
+/// Adds --kernel-a and --kernel-b (each object's kernel, overriding --kernel for it) to a command.
+inline void add_object_kernels(CLI::App* cmd, std::string& kernel_a, std::string& kernel_b)
+{
+    cmd->add_option("--kernel-a", kernel_a,
+                    "A's kernel alone, overriding --kernel for it: auto, geodesic or euclidean (e.g. geodesic for a "
+                    "part with sharp edges beside a lean scan)")
+        ->check(CLI::IsMember(kernel_names()));
+    cmd->add_option("--kernel-b", kernel_b, "B's kernel alone, as --kernel-a")->check(CLI::IsMember(kernel_names()));
 }
 
 /// A vector as a JSON array of three numbers; null when an entry is NaN or infinite (an answer
@@ -287,6 +319,35 @@ Prepared_object<Object> prepare_object(const Object_points& input, const std::st
     return {std::move(object), ms_since(start)};
 }
 
+/// Two objects preprocessed for a query: `shared` when both name the same file and take the same
+/// kernel, which is then preprocessed once (b a copy of a, sharing its data).
+template <class A, class B>
+struct Prepared_pair {
+    Prepared_object<A> a;
+    Prepared_object<B> b;
+    bool shared = false;
+
+    /// The preprocessing time of the objects built (once when shared).
+    double preprocess_ms() const { return a.preprocess_ms + (shared ? 0.0 : b.preprocess_ms); }
+};
+
+/// Preprocesses the two clouds into an A and a B (see Prepared_pair); the same file under two
+/// kernels is preprocessed twice.
+template <class A, class B>
+Prepared_pair<A, B> prepare_pair(const Two_clouds& clouds, const std::string& file_a, const std::string& file_b,
+                                 const Object_settings& settings)
+{
+    Prepared_object<A> a = prepare_object<A>(clouds.a, file_a, settings);
+    if constexpr (std::is_same_v<A, B>) {
+        if (clouds.same) {
+            Prepared_object<B> b = a;
+            return {std::move(a), std::move(b), true};
+        }
+    }
+    Prepared_object<B> b = prepare_object<B>(clouds.b ? *clouds.b : clouds.a, file_b, settings);
+    return {std::move(a), std::move(b), false};
+}
+
 /// The answer of one query and its wall time (steady_clock, microseconds).
 struct Timed_result {
     PCCD::Intersection_result result;
@@ -294,8 +355,8 @@ struct Timed_result {
 };
 
 /// One query: do_intersect (first_hit) or intersection_points, with the policy named `method`.
-template <class Object>
-Timed_result run_timed_query(const Object& a, const PCCD::Rigid_transform_3<double>& pose_a, const Object& b,
+template <class A, class B>
+Timed_result run_timed_query(const A& a, const PCCD::Rigid_transform_3<double>& pose_a, const B& b,
                              const PCCD::Rigid_transform_3<double>& pose_b, const PCCD::Intersection_options& options,
                              const std::string& method, bool first_hit)
 {

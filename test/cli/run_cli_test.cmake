@@ -225,6 +225,33 @@ elseif(CASE STREQUAL "kernel_option")
     pccd_run(FAIL ARGS ${command} sphere.xyz sphere.xyz --kernel lean
              MATCH "--kernel: lean not in \\{auto,geodesic,euclidean\\}")
   endforeach()
+  # --kernel-a / --kernel-b: one object of each kind. The mixed pair answers as both kinds do (the
+  # distance of surfaces 1 apart, the verdicts); the same file under two kernels is built twice.
+  pccd_run(OK ARGS distance sphere.xyz torus.ply --transform-b ${shift_3} --kernel-a geodesic --kernel-b euclidean --json
+           MATCH "\"status\": \"separate\"" "\"same_object\": false")
+  string(JSON kernel_a GET "${PCCD_STDOUT}" a kernel)
+  string(JSON kernel_b GET "${PCCD_STDOUT}" b kernel)
+  if(NOT kernel_a STREQUAL "geodesic" OR NOT kernel_b STREQUAL "euclidean")
+    message(FATAL_ERROR "--kernel-a geodesic --kernel-b euclidean built ${kernel_a} and ${kernel_b}")
+  endif()
+  pccd_json_number(distance "${PCCD_STDOUT}" distance)
+  pccd_expect_between(${distance} 0.97 1.03 "the mixed pair's distance of surfaces 1 apart")
+  pccd_run(OK ARGS collide sphere.xyz sphere.xyz --transform-b ${shift_1} --kernel-a euclidean --json
+           MATCH "\"intersects\": true" "\"same_object\": false")
+  string(JSON kernel_a GET "${PCCD_STDOUT}" a kernel)
+  string(JSON kernel_b GET "${PCCD_STDOUT}" b kernel)
+  if(NOT kernel_a STREQUAL "euclidean" OR NOT kernel_b STREQUAL "geodesic")
+    message(FATAL_ERROR "--kernel-a euclidean (B auto) built ${kernel_a} and ${kernel_b}")
+  endif()
+  pccd_run(OK ARGS collide sphere.xyz torus.ply --transform-b ${shift_1} --kernel-b euclidean --method rst
+           STDOUT_MATCH "A: sphere.xyz, 2000 points, geodesic kernel" "B: torus.ply, 2000 points, euclidean kernel"
+                        "answer: intersecting")
+  foreach(command collide distance)
+    foreach(option --kernel-a --kernel-b)
+      pccd_run(FAIL ARGS ${command} sphere.xyz sphere.xyz ${option} lean
+               MATCH "${option}: lean not in \\{auto,geodesic,euclidean\\}")
+    endforeach()
+  endforeach()
 elseif(CASE STREQUAL "collide_text")
   pccd_run(OK ARGS collide sphere.xyz torus.ply --transform-a ${identity} --transform-b ${shift_1}
            MATCH "A: sphere.xyz, 2000 points" "B: torus.ply, 2000 points" "answer: intersecting"
