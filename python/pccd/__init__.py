@@ -16,6 +16,9 @@ read_points, write_points
     Point files (PLY, OFF, XYZ/PWN) to and from numpy arrays.
 Object
     A preprocessed point cloud; ``Object.save`` / ``Object.load`` keep it in a file.
+LeanObject
+    The lean object for large scans (from about 10^6 points): the Euclidean kernel, about a fifth
+    of an Object's memory; the single-pair queries take it, alone or beside an Object.
 do_intersect
     Whether two posed objects intersect (stops at the first point found).
 intersection_points
@@ -74,6 +77,7 @@ from ._pccd import (
     ContactResult,
     ContactTimeResult,
     DistanceResult,
+    LeanObject,
     Object,
     Result,
     World,
@@ -100,6 +104,7 @@ from ._pccd import (
 __all__ = [
     "__version__",
     "Object",
+    "LeanObject",
     "Result",
     "do_intersect",
     "do_intersect_many",

@@ -49,13 +49,30 @@ struct Motion_poses {
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();
 };
 
-/// One query: the objects (kept alive by `keep`) and their motions.
+/// One query: the objects (kept alive by `keep`; each a pccd.Object, or a pccd.LeanObject when
+/// its `lean` flag is set) and their motions.
 struct Motion_case {
-    const Object* a = nullptr;
+    const void* a = nullptr;
+    bool lean_a = false;
     Motion_poses motion_a;
-    const Object* b = nullptr;
+    const void* b = nullptr;
+    bool lean_b = false;
     Motion_poses motion_b;
 };
+
+/// The C++ object of a pccd.Object or pccd.LeanObject `o` (setting `lean` for the latter);
+/// TypeError "<where>: <what> must be ..." for anything else.
+const void* motion_object(const py::handle& o, bool& lean, const std::string& where, const char* what)
+{
+    lean = false;
+    if (py::isinstance<Object>(o)) return &o.cast<const Object&>();
+    if (py::isinstance<Lean_object>(o)) {
+        lean = true;
+        return &o.cast<const Lean_object&>();
+    }
+    throw py::type_error(where + ": " + what + " must be pccd.Object or pccd.LeanObject instances, not " +
+                         std::string(py::str(py::type::handle_of(o).attr("__name__"))));
+}
 
 /// The length of a sequence argument, or -1 for anything else (a str or bytes, a 0-d array, ...).
 Py_ssize_t sequence_length(py::handle value)
@@ -138,13 +155,27 @@ PCCD::Contact_time_options contact_time_options(double tolerance, const std::opt
 }
 
 /// PCCD::time_of_contact on one case, both objects moving linearly or both by screws.
-PCCD::Contact_time_result run_case(const Motion_case& c, bool screw, const PCCD::Contact_time_options& options)
+template <class A, class B>
+PCCD::Contact_time_result run_typed_case(const A& a, const B& b, const Motion_case& c, bool screw,
+                                         const PCCD::Contact_time_options& options)
 {
     if (screw)
-        return PCCD::time_of_contact(*c.a, PCCD::Screw_motion(c.motion_a.from, c.motion_a.to), *c.b,
+        return PCCD::time_of_contact(a, PCCD::Screw_motion(c.motion_a.from, c.motion_a.to), b,
                                      PCCD::Screw_motion(c.motion_b.from, c.motion_b.to), options);
-    return PCCD::time_of_contact(*c.a, PCCD::Linear_motion(c.motion_a.from, c.motion_a.to, c.motion_a.centre), *c.b,
+    return PCCD::time_of_contact(a, PCCD::Linear_motion(c.motion_a.from, c.motion_a.to, c.motion_a.centre), b,
                                  PCCD::Linear_motion(c.motion_b.from, c.motion_b.to, c.motion_b.centre), options);
+}
+
+PCCD::Contact_time_result run_case(const Motion_case& c, bool screw, const PCCD::Contact_time_options& options)
+{
+    const auto* ga = static_cast<const Object*>(c.a);
+    const auto* gb = static_cast<const Object*>(c.b);
+    const auto* la = static_cast<const Lean_object*>(c.a);
+    const auto* lb = static_cast<const Lean_object*>(c.b);
+    if (!c.lean_a && !c.lean_b) return run_typed_case(*ga, *gb, c, screw, options);
+    if (!c.lean_a) return run_typed_case(*ga, *lb, c, screw, options);
+    if (!c.lean_b) return run_typed_case(*la, *gb, c, screw, options);
+    return run_typed_case(*la, *lb, c, screw, options);
 }
 
 py::array_t<double> vector_array(const Eigen::Vector3d& v)
@@ -200,8 +231,8 @@ sub-step can be missed (it is then shallower than about near_step sampling radii
 
 Parameters
 ----------
-a, b : Object
-    The two objects.
+a, b : Object or LeanObject
+    The two objects (either kind, in any mix).
 motion_a, motion_b : tuple
     (pose at t = 0, pose at t = 1), each a 3x4 array [R | t] or a 4x4 homogeneous matrix (last
     row 0 0 0 1) or None (the identity), under the rigidity rule of do_intersect; None for an
@@ -270,7 +301,7 @@ ValueError
     A pair that is not a 4- or 6-tuple, a bad motion or centre (naming the pair), threads=0 or an
     invalid option; nothing is computed then.
 TypeError
-    Items 0 and 2 of a pair are not Object instances.
+    Items 0 and 2 of a pair are not Object or LeanObject instances.
 )doc";
 
 const char* result_doc = R"doc(The answer of time_of_contact() and time_of_contact_many(): PCCD::Contact_time_result.
@@ -329,7 +360,7 @@ void add_continuous(py::module_& m)
 
     m.def(
         "time_of_contact",
-        [](const Object& a, const py::object& motion_a, const Object& b, const py::object& motion_b,
+        [](const py::object& a, const py::object& motion_a, const py::object& b, const py::object& motion_b,
            const std::string& motion, const py::object& centre_a, const py::object& centre_b, double tolerance,
            const std::optional<double>& time_accuracy, double near_step, std::size_t max_steps, std::uint64_t seed) {
             const char* function = "time_of_contact";
@@ -339,7 +370,11 @@ void add_continuous(py::module_& m)
             if (screw && !(centre_a.is_none() && centre_b.is_none()))
                 throw py::value_error(std::string(function) + "(): " + (centre_a.is_none() ? "centre_b" : "centre_a") +
                                       " applies to motion='linear' only (a screw turns about its own axis)");
-            Motion_case c{&a, motion_argument(motion_a, "motion_a"), &b, motion_argument(motion_b, "motion_b")};
+            Motion_case c;
+            c.a = motion_object(a, c.lean_a, function + std::string("()"), "a");
+            c.b = motion_object(b, c.lean_b, function + std::string("()"), "b");
+            c.motion_a = motion_argument(motion_a, "motion_a");
+            c.motion_b = motion_argument(motion_b, "motion_b");
             c.motion_a.centre = centre_argument(centre_a, "centre_a");
             c.motion_b.centre = centre_argument(centre_b, "centre_b");
             Contact_time_held out;
@@ -382,11 +417,9 @@ void add_continuous(py::module_& m)
                 const py::sequence pair = py::reinterpret_borrow<py::sequence>(item);
                 const py::object a = pair[0];
                 const py::object b = pair[2];
-                if (!py::isinstance<Object>(a) || !py::isinstance<Object>(b))
-                    throw py::type_error(where + ": items 0 and 2 must be pccd.Object instances");
                 Motion_case c;
-                c.a = &a.cast<const Object&>();
-                c.b = &b.cast<const Object&>();
+                c.a = motion_object(a, c.lean_a, where, "items 0 and 2");
+                c.b = motion_object(b, c.lean_b, where, "items 0 and 2");
                 try {
                     c.motion_a = motion_argument(pair[1], "motion_a");
                     c.motion_b = motion_argument(pair[3], "motion_b");

@@ -5,6 +5,7 @@
 
 #include <PCCD/Intersection/Interpolation_search.h>
 #include <PCCD/Intersection/Intersection_options.h>
+#include <PCCD/Euclidean_point_cloud_object.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Proximity/Distance_result.h>
 #include <PCCD/Rigid_transform_3.h>
@@ -24,6 +25,29 @@ namespace py = pybind11;
 
 /// The preprocessed object of pccd.Object (copies share the data).
 using Object = PCCD::Point_cloud_object<>;
+/// The lean object of pccd.LeanObject (the Euclidean kernel, no geodesic map).
+using Lean_object = PCCD::Euclidean_point_cloud_object<>;
+
+/// Calls `f(object)` with the pccd.Object or pccd.LeanObject `value` holds (as a const reference to
+/// its C++ object). Raises TypeError "<function>(): <name> must be a pccd.Object or a
+/// pccd.LeanObject, not <type>" for anything else.
+template <class F>
+decltype(auto) with_object(py::handle value, const char* function, const char* name, F&& f)
+{
+    if (py::isinstance<Object>(value)) return f(value.cast<const Object&>());
+    if (py::isinstance<Lean_object>(value)) return f(value.cast<const Lean_object&>());
+    throw py::type_error(std::string(function) + "(): " + name + " must be a pccd.Object or a pccd.LeanObject, not " +
+                         std::string(py::str(py::type::handle_of(value).attr("__name__"))));
+}
+
+/// with_object() for the two objects of a query: `f(a, b)` with each one's C++ type.
+template <class F>
+decltype(auto) with_objects(py::handle a, const char* name_a, py::handle b, const char* name_b, const char* function, F&& f)
+{
+    return with_object(a, function, name_a, [&](const auto& object_a) -> decltype(auto) {
+        return with_object(b, function, name_b, [&](const auto& object_b) -> decltype(auto) { return f(object_a, object_b); });
+    });
+}
 
 /// An (N, 3) array argument read in place: float32 or float64 rows at any strides. Other numeric
 /// dtypes are converted to float64 first (the only copy), which `keep` then holds.

@@ -232,8 +232,8 @@ surfaces' normals there; with penetration=True, the penetration depths of inters
 
 Parameters
 ----------
-a, b : Object
-    The two objects.
+a, b : Object or LeanObject
+    The two objects (either kind, in any mix).
 pose_a, pose_b : array_like or None
     Rigid motions from each object's frame to the world: a 3x4 array [R | t] or a 4x4
     homogeneous matrix (last row 0 0 0 1); None is the identity. The rule of do_intersect.
@@ -273,8 +273,8 @@ distance() when the answer is "no" early.
 
 Parameters
 ----------
-a, b : Object
-    The two objects.
+a, b : Object or LeanObject
+    The two objects (either kind, in any mix).
 pose_a, pose_b : array_like or None
     3x4 or 4x4 rigid transforms (see distance); None is the identity.
 margin : float
@@ -301,8 +301,8 @@ witness pair, as a physics engine consumes them.
 
 Parameters
 ----------
-a, b : Object
-    The two objects.
+a, b : Object or LeanObject
+    The two objects (either kind, in any mix).
 pose_a, pose_b : array_like or None
     3x4 or 4x4 rigid transforms (see distance); None is the identity.
 )doc") + options_doc + R"doc(
@@ -345,7 +345,7 @@ ValueError
     A pair that is not a 4-tuple, a bad pose (naming the pair), threads=0 or an invalid option;
     nothing is computed then.
 TypeError
-    Items 0 and 2 of a pair are not Object instances.
+    Items 0 and 2 of a pair are not Object or LeanObject instances.
 )doc";
 
 const char* distance_result_doc = R"doc(The answer of distance() and distance_many(): PCCD::Distance_result.
@@ -447,7 +447,7 @@ minimum clearance.
 
 Parameters
 ----------
-object, scene : Object
+object, scene : Object or LeanObject
     The moving object and the scene (the scene stays at the identity).
 poses : array_like
     (n, 3, 4) or (n, 4, 4): the object's poses in the scene's frame, [R | t] row by row; n may be 0.
@@ -606,17 +606,20 @@ void add_proximity(py::module_& m)
 
     m.def(
         "distance",
-        [](const Object& a, const py::object& pose_a, const Object& b, const py::object& pose_b, const py::kwargs& kwargs) {
+        [](const py::object& a, const py::object& pose_a, const py::object& b, const py::object& pose_b,
+           const py::kwargs& kwargs) {
             const PCCD::Distance_options options = call_options(kwargs, "distance");
             const auto ta = pose_argument(pose_a, "pose_a");
             const auto tb = pose_argument(pose_b, "pose_b");
-            auto [r, us] = timed([&] { return PCCD::distance(a, ta, b, tb, options); });
-            return Distance_held{std::move(r), us};
+            return with_objects(a, "a", b, "b", "distance", [&](const auto& oa, const auto& ob) {
+                auto [r, us] = timed([&] { return PCCD::distance(oa, ta, ob, tb, options); });
+                return Distance_held{std::move(r), us};
+            });
         },
         py::arg("a"), py::arg("pose_a"), py::arg("b"), py::arg("pose_b"), distance_doc.c_str());
     m.def(
         "within_distance",
-        [](const Object& a, const py::object& pose_a, const Object& b, const py::object& pose_b, double margin,
+        [](const py::object& a, const py::object& pose_a, const py::object& b, const py::object& pose_b, double margin,
            const py::kwargs& kwargs) {
             if (!(std::isfinite(margin) && margin >= 0.0))
                 throw py::value_error("within_distance(): margin " + number_text(margin) +
@@ -624,19 +627,24 @@ void add_proximity(py::module_& m)
             const PCCD::Distance_options options = call_options(kwargs, "within_distance");
             const auto ta = pose_argument(pose_a, "pose_a");
             const auto tb = pose_argument(pose_b, "pose_b");
-            auto [r, us] = timed([&] { return PCCD::within_distance(a, ta, b, tb, margin, options); });
-            return Clearance_held{std::move(r), us};
+            return with_objects(a, "a", b, "b", "within_distance", [&](const auto& oa, const auto& ob) {
+                auto [r, us] = timed([&] { return PCCD::within_distance(oa, ta, ob, tb, margin, options); });
+                return Clearance_held{std::move(r), us};
+            });
         },
         py::arg("a"), py::arg("pose_a"), py::arg("b"), py::arg("pose_b"), py::arg("margin"),
         within_distance_doc.c_str());
     m.def(
         "contacts",
-        [](const Object& a, const py::object& pose_a, const Object& b, const py::object& pose_b, const py::kwargs& kwargs) {
+        [](const py::object& a, const py::object& pose_a, const py::object& b, const py::object& pose_b,
+           const py::kwargs& kwargs) {
             const PCCD::Distance_options options = call_options(kwargs, "contacts");
             const auto ta = pose_argument(pose_a, "pose_a");
             const auto tb = pose_argument(pose_b, "pose_b");
-            auto [r, us] = timed([&] { return PCCD::contacts(a, ta, b, tb, options); });
-            return Contact_held{std::move(r), us};
+            return with_objects(a, "a", b, "b", "contacts", [&](const auto& oa, const auto& ob) {
+                auto [r, us] = timed([&] { return PCCD::contacts(oa, ta, ob, tb, options); });
+                return Contact_held{std::move(r), us};
+            });
         },
         py::arg("a"), py::arg("pose_a"), py::arg("b"), py::arg("pose_b"), contacts_doc.c_str());
     m.def(
@@ -647,9 +655,10 @@ void add_proximity(py::module_& m)
             std::vector<PCCD::Distance_result> results;
             {
                 py::gil_scoped_release release;
-                const PCCD::Batch_options batch{.threads = arguments.threads, .first_index = arguments.first_index};
-                results = PCCD::distance_many(std::span<const PCCD::Posed_pair<Object>>(posed.pairs), batch,
-                                              arguments.options);
+                results = run_posed_pairs<PCCD::Distance_result>(posed, arguments.first_index, [&](auto list, std::uint64_t first) {
+                    const PCCD::Batch_options batch{.threads = arguments.threads, .first_index = first};
+                    return PCCD::distance_many(list, batch, arguments.options);
+                });
             }
             std::vector<Distance_held> out;
             out.reserve(results.size());
@@ -705,7 +714,8 @@ void add_proximity(py::module_& m)
         });
     m.def(
         "clearance",
-        [](const Object& object, const Object& scene, const py::object& poses, double margin, const py::kwargs& kwargs) {
+        [](const py::object& object, const py::object& scene, const py::object& poses, double margin,
+           const py::kwargs& kwargs) {
             if (!(std::isfinite(margin) && margin >= 0.0))
                 throw py::value_error("clearance(): margin " + number_text(margin) + " must be finite and >= 0 (world units)");
             Distance_arguments arguments = distance_arguments(kwargs, true, "clearance");
@@ -715,8 +725,10 @@ void add_proximity(py::module_& m)
             options.distance.max_distance.reset();
             PCCD::internal::check_options(options, margin, "clearance()");
             const std::vector<PCCD::Rigid_transform_3<double>> path = pose_stack(poses, "clearance", "poses");
-            auto [r, us] = timed([&] { return PCCD::clearance(object, scene, path, margin, options); });
-            return Profile_held{std::move(r), us};
+            return with_objects(object, "object", scene, "scene", "clearance", [&](const auto& o, const auto& sc) {
+                auto [r, us] = timed([&] { return PCCD::clearance(o, sc, path, margin, options); });
+                return Profile_held{std::move(r), us};
+            });
         },
         py::arg("object"), py::arg("scene"), py::arg("poses"), py::arg("margin"), clearance_doc.c_str());
 }

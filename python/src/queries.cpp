@@ -186,7 +186,8 @@ auto with_policy(const Query_parameters& q, const F& f)
     return q.rst ? f(q.randomized) : f(q.isearch);
 }
 
-Result query(const Object& a, const py::handle& pose_a, const Object& b, const py::handle& pose_b, bool first_hit,
+template <class A, class B>
+Result query(const A& a, const py::handle& pose_a, const B& b, const py::handle& pose_b, bool first_hit,
              const Query_parameters& q)
 {
     const PCCD::Rigid_transform_3<double> ta = pose_argument(pose_a, "pose_a");
@@ -209,14 +210,15 @@ std::vector<Result> many(const py::iterable& pairs, std::optional<unsigned> thre
                          const Query_parameters& q)
 {
     const Posed_pairs posed = posed_pairs(pairs);
-    const std::vector<PCCD::Posed_pair<Object>>& list = posed.pairs;
     std::vector<PCCD::Intersection_result> results;
     {
         py::gil_scoped_release release;
-        const PCCD::Batch_options batch{.threads = threads, .first_index = first_index};
-        results = with_policy(q, [&](const auto& policy) {
-            return first_hit ? PCCD::do_intersect_many(list, batch, q.options, policy)
-                             : PCCD::intersection_points_many(list, batch, q.options, policy);
+        results = run_posed_pairs<PCCD::Intersection_result>(posed, first_index, [&](auto list, std::uint64_t first) {
+            const PCCD::Batch_options batch{.threads = threads, .first_index = first};
+            return with_policy(q, [&](const auto& policy) {
+                return first_hit ? PCCD::do_intersect_many(list, batch, q.options, policy)
+                                 : PCCD::intersection_points_many(list, batch, q.options, policy);
+            });
         });
     }
     std::vector<Result> out;
@@ -302,8 +304,8 @@ carries.
 
 Parameters
 ----------
-a, b : Object
-    The two objects.
+a, b : Object or LeanObject
+    The two objects (either kind, in any mix).
 pose_a, pose_b : array_like or None
     Rigid motions from each object's frame to the world: a 3x4 array [R | t] or a 4x4
     homogeneous matrix (last row 0 0 0 1); None is the identity. A matrix that scales, shears or
@@ -346,8 +348,8 @@ points are no two closer than `point_spacing`, in world coordinates.
 
 Parameters
 ----------
-a, b : Object
-    The two objects.
+a, b : Object or LeanObject
+    The two objects (either kind, in any mix).
 pose_a, pose_b : array_like or None
     3x4 or 4x4 rigid transforms (see do_intersect); None is the identity.
 )doc") + query_doc_parameters + R"doc(
@@ -401,7 +403,7 @@ ValueError
     A pair that is not a 4-tuple, a bad pose (the message names the pair), or an invalid option;
     nothing is computed then.
 TypeError
-    Items 0 and 2 of a pair are not Object instances.
+    Items 0 and 2 of a pair are not Object or LeanObject instances.
 
 Notes
 -----
@@ -481,11 +483,16 @@ Posed_pairs posed_pairs(const py::iterable& pairs)
         const py::sequence pair = py::reinterpret_borrow<py::sequence>(item);
         const py::object a = pair[0];
         const py::object b = pair[2];
-        if (!py::isinstance<Object>(a) || !py::isinstance<Object>(b))
-            throw py::type_error(where + ": items 0 and 2 must be pccd.Object instances");
-        PCCD::Posed_pair<Object> posed;
-        posed.a = &a.cast<const Object&>();
-        posed.b = &b.cast<const Object&>();
+        const auto kind = [&](const py::object& o, bool& lean) -> const void* {
+            if (py::isinstance<Object>(o)) return &o.cast<const Object&>();
+            lean = true;
+            if (py::isinstance<Lean_object>(o)) return &o.cast<const Lean_object&>();
+            throw py::type_error(where + ": items 0 and 2 must be pccd.Object or pccd.LeanObject instances, not " +
+                                 std::string(py::str(py::type::handle_of(o).attr("__name__"))));
+        };
+        Any_posed_pair posed;
+        posed.a = kind(a, posed.lean_a);
+        posed.b = kind(b, posed.lean_b);
         try {
             posed.pose_a = pose_argument(pair[1], "pose_a");
             posed.pose_b = pose_argument(pair[3], "pose_b");
@@ -545,16 +552,22 @@ void add_queries(py::module_& m)
 
     m.def(
         "do_intersect",
-        [](const Object& a, const py::object& pose_a, const Object& b, const py::object& pose_b,
+        [](const py::object& a, const py::object& pose_a, const py::object& b, const py::object& pose_b,
            const py::kwargs& kwargs) {
-            return query(a, pose_a, b, pose_b, true, call_parameters(kwargs, "do_intersect"));
+            const Query_parameters q = call_parameters(kwargs, "do_intersect");
+            return with_objects(a, "a", b, "b", "do_intersect", [&](const auto& oa, const auto& ob) {
+                return query(oa, pose_a, ob, pose_b, true, q);
+            });
         },
         py::arg("a"), py::arg("pose_a"), py::arg("b"), py::arg("pose_b"), do_intersect_doc.c_str());
     m.def(
         "intersection_points",
-        [](const Object& a, const py::object& pose_a, const Object& b, const py::object& pose_b,
+        [](const py::object& a, const py::object& pose_a, const py::object& b, const py::object& pose_b,
            const py::kwargs& kwargs) {
-            return query(a, pose_a, b, pose_b, false, call_parameters(kwargs, "intersection_points"));
+            const Query_parameters q = call_parameters(kwargs, "intersection_points");
+            return with_objects(a, "a", b, "b", "intersection_points", [&](const auto& oa, const auto& ob) {
+                return query(oa, pose_a, ob, pose_b, false, q);
+            });
         },
         py::arg("a"), py::arg("pose_a"), py::arg("b"), py::arg("pose_b"), intersection_points_doc.c_str());
     m.def(

@@ -285,7 +285,11 @@ int
                const py::object& mask) {
                 if (!py::isinstance<Object>(object))
                     throw py::type_error("World.insert(): object must be a pccd.Object, not " +
-                                         std::string(py::str(py::type::handle_of(object).attr("__name__"))));
+                                         std::string(py::str(py::type::handle_of(object).attr("__name__"))) +
+                                         (py::isinstance<Lean_object>(object)
+                                              ? " (a World holds pccd.Object instances only; C++ worlds of lean objects: "
+                                                "PCCD::Collision_world<PCCD::Euclidean_point_cloud_object<>>)"
+                                              : ""));
                 const Pose p = pose_argument(pose, "pose");
                 const PCCD::Collision_filter filter{filter_bits(group, "World.insert", "group"),
                                                     filter_bits(mask, "World.insert", "mask")};

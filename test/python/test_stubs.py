@@ -43,7 +43,7 @@ def test_the_stubs_name_every_public_attribute_and_nothing_else():
     assert module - stubbed == set(), f"not in the stubs: {sorted(module - stubbed)}"
     assert stubbed - module == set(), f"in the stubs only: {sorted(stubbed - module)}"
     assert set(pccd.__all__) <= stubbed
-    for cls in (compiled.Object, compiled.Result, compiled.DistanceResult, compiled.ClearanceResult,
+    for cls in (compiled.Object, compiled.LeanObject, compiled.Result, compiled.DistanceResult, compiled.ClearanceResult,
                 compiled.ContactResult, compiled.Contact, compiled.World, compiled.WorldHandle,
                 compiled.ContactTimeResult, compiled.ClearanceProfile):
         members = public(dir(cls))
