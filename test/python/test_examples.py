@@ -1,7 +1,8 @@
 """examples/python/dask_many_pairs.py on a LocalCluster of 2 worker processes: its results,
 gathered from the workers, equal one pccd.do_intersect_many (intersection_points_many) call over
 the same pairs, bit for bit; examples/python/proximity.py prints the exact gaps and depths of its
-two spheres; examples/python/contact_time.py the exact first contact times of its spheres."""
+two spheres; examples/python/contact_time.py the exact first contact times of its spheres;
+examples/python/lean_scan.py the exact clearances of a sphere over a floor held as a LeanObject."""
 
 import os
 import subprocess
@@ -101,3 +102,22 @@ def test_contact_time_example_prints_the_exact_contact_times(source_dir):
             assert row[1] == "no_contact", row
     assert "the same answers as the single calls" in done.stdout
     assert "6 discrete poses see contact 0 times; time_of_contact: contact" in done.stdout
+
+
+def test_lean_scan_example_prints_the_exact_clearances(source_dir):
+    """examples/python/lean_scan.py: a sphere (an Object) over a 200,000-point floor (a LeanObject):
+    every clearance is the exact gap within 0.001 (a quarter of the floor's spacing of about 0.0045),
+    the first pose below the 0.03 margin is the one at gap 0.02, and the lean floor holds at most 250
+    bytes per point."""
+    script = source_dir / "examples" / "python" / "lean_scan.py"
+    done = subprocess.run([sys.executable, str(script)], capture_output=True, text=True, timeout=600)
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "euclidean kernel" in done.stdout and "geodesic kernel" in done.stdout, done.stdout
+    per_point = float(done.stdout.split(" bytes per point")[0].split()[-1])
+    assert 80 <= per_point <= 250, done.stdout
+    rows = [line.split() for line in done.stdout.splitlines() if line[:7].strip().replace(".", "").isdigit()]
+    assert len(rows) == 7, done.stdout
+    for height, gap, clearance, status in rows:
+        assert abs(float(clearance) - float(gap)) <= 0.001, (height, gap, clearance)
+        assert status == ("below_margin" if float(gap) < 0.03 else "clear"), (height, status)
+    assert "first pose below the margin 0.03: 4" in done.stdout
