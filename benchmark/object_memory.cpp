@@ -13,7 +13,11 @@
 // With `--kernel euclidean` the same for the lean object (Euclidean_point_cloud_object): its
 // stages and its parts (no graph or CPSP map kept).
 //
+// With `--save FILE` the object is then saved to FILE and loaded back (wall times, file size, and
+// whether the loaded object has the same points, normals and hierarchy).
+//
 // Usage: object_memory [--points 1000000] [--threads T] [--kernel geodesic|euclidean] [--graph sig|knn]
+//                      [--save FILE]
 #include <PCCD/Euclidean_point_cloud_object.h>
 #include <PCCD/IO/read_triangle_mesh.h>
 #include <PCCD/Point_cloud_object.h>
@@ -26,6 +30,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -46,7 +51,7 @@ struct Stage_row {
 };
 
 template <class Object>
-int measure(std::size_t n, std::optional<unsigned> threads, PCCD::Graph_kind graph);
+int measure(std::size_t n, std::optional<unsigned> threads, PCCD::Graph_kind graph, const std::string& save);
 
 struct Part {
     const char* name;
@@ -130,6 +135,7 @@ int main(int argc, char** argv)
     std::optional<unsigned> threads;
     std::string kernel = "geodesic";
     PCCD::Graph_kind graph = PCCD::Graph_kind::sphere_of_influence;
+    std::string save;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string a = argv[i];
         if (a == "--points")
@@ -140,19 +146,22 @@ int main(int argc, char** argv)
             kernel = argv[i + 1];
         else if (a == "--graph" && (std::string(argv[i + 1]) == "knn" || std::string(argv[i + 1]) == "sig"))
             graph = std::string(argv[i + 1]) == "knn" ? PCCD::Graph_kind::knn : PCCD::Graph_kind::sphere_of_influence;
+        else if (a == "--save")
+            save = argv[i + 1];
         else {
-            std::fprintf(stderr, "usage: object_memory [--points 1000000] [--threads T] [--kernel geodesic|euclidean] [--graph sig|knn]\n");
+            std::fprintf(stderr, "usage: object_memory [--points 1000000] [--threads T] [--kernel geodesic|euclidean] [--graph sig|knn] "
+                                 "[--save FILE]\n");
             return 2;
         }
     }
-    if (kernel == "euclidean") return measure<PCCD::Euclidean_point_cloud_object<>>(n, threads, graph);
-    return measure<PCCD::Point_cloud_object<>>(n, threads, graph);
+    if (kernel == "euclidean") return measure<PCCD::Euclidean_point_cloud_object<>>(n, threads, graph, save);
+    return measure<PCCD::Point_cloud_object<>>(n, threads, graph, save);
 }
 
 namespace {
 
 template <class Object>
-int measure(std::size_t n, std::optional<unsigned> threads, PCCD::Graph_kind graph)
+int measure(std::size_t n, std::optional<unsigned> threads, PCCD::Graph_kind graph, const std::string& save)
 {
     const auto path = std::filesystem::path(PCCD_DATA_DIR) / "bunny00.off";
     std::optional<Object> object;
@@ -205,6 +214,22 @@ int measure(std::size_t n, std::optional<unsigned> threads, PCCD::Graph_kind gra
 
     print_parts(*object, N);
     std::printf("resident set held by the object: %.1f MB (%.1f B/point)\n", held / 1e6, double(held) / N);
+    if (!save.empty()) {
+        const auto start = std::chrono::steady_clock::now();
+        object->save(save);
+        const auto saved = std::chrono::steady_clock::now();
+        const Object loaded = Object::load(save);
+        const auto done = std::chrono::steady_clock::now();
+        const auto seconds = [](auto a, auto b) { return std::chrono::duration<double>(b - a).count(); };
+        const bool same = loaded.cloud().coordinates() == object->cloud().coordinates() && loaded.normals() == object->normals() &&
+                          loaded.hierarchy().layout().counts == object->hierarchy().layout().counts &&
+                          loaded.hierarchy().layout().order == object->hierarchy().layout().order;
+        std::printf("saved to %s in %.2f s (%.1f MB, %.1f B/point), loaded in %.2f s; the same points, normals and "
+                    "hierarchy: %s\n",
+                    save.c_str(), seconds(start, saved), double(std::filesystem::file_size(save)) / 1e6,
+                    double(std::filesystem::file_size(save)) / N, seconds(saved, done), same ? "yes" : "NO");
+        if (!same) return 1;
+    }
     return 0;
 }
 

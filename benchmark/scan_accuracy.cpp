@@ -66,9 +66,7 @@ int main(int argc, char** argv)
         return 1;
     }
     object_options.domain.enabled = !no_domain;
-    object_options.surface_fit = fit == "plane" ? PCCD::Surface_fit::plane
-                                 : fit == "imls" ? PCCD::Surface_fit::imls
-                                                 : PCCD::Surface_fit::sphere;
+    object_options.surface_fit = PCCD::surface_fit_from_string(fit).value(); // CLI11 checked the name
     query_options.verify_contacts = !no_verify;
     query_options.certify_separation = !no_certify;
     if (cad) {

@@ -127,9 +127,7 @@ Arguments parse(int argc, char** argv)
             a.sharp_tunnel = value == "sharp";
         }
         else if (key == "--leaf-size") a.leaf_size = std::stoul(value);
-        else if (key == "--wagon-fit" && value == "plane") a.wagon_fit = PCCD::Surface_fit::plane;
-        else if (key == "--wagon-fit" && value == "sphere") a.wagon_fit = PCCD::Surface_fit::sphere;
-        else if (key == "--wagon-fit" && value == "imls") a.wagon_fit = PCCD::Surface_fit::imls;
+        else if (key == "--wagon-fit" && PCCD::surface_fit_from_string(value)) a.wagon_fit = PCCD::surface_fit_from_string(value);
         else if (key == "--wagon-theta-eps") a.wagon_theta_eps = std::stod(value);
         else if (key == "--wagon-residual-scale") a.wagon_residual_scale = std::stod(value);
         else throw std::invalid_argument("unknown option " + key);

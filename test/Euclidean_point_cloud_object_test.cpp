@@ -1,8 +1,11 @@
 // Tests of the lean object with the Euclidean kernel (PCCD/Euclidean_point_cloud_object.h) and of
 // the interpolation search on objects without a CPSP map (Intersection/internal/isearch_partners.h),
 // against analytic spheres: verdicts beyond the grazing band, contacts on the exact circle, the
-// distance of two spheres, the surface and its normals, what the object keeps, and bad input.
+// distance of two spheres, the surface and its normals, what the object keeps, bad input, and its
+// files (PCCD/Euclidean_point_cloud_object_file.h: save and load, bit for bit).
 #include <PCCD/Euclidean_point_cloud_object.h>
+#include <PCCD/Euclidean_point_cloud_object_class.h>
+#include <PCCD/Euclidean_point_cloud_object_file.h>
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Proximity/distance.h>
@@ -17,8 +20,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iterator>
+#include <string>
 #include <vector>
 
+#include "Hierarchy/hierarchy_compare.h"
 #include "surface_test_helpers.h"
 
 namespace {
@@ -213,4 +220,81 @@ TEST_CASE("Lean object: given normals decide the orientation, from a file's poin
     // The input index finds each point of the file again.
     for (std::uint32_t i = 0; i < lean.size(); i += 97)
         CHECK((lean.cloud().position(i).template cast<double>() - data.points[lean.input_index(i)]).norm() == 0.0);
+}
+
+TEST_CASE("Lean object: a saved object loads back identical and answers as it did", "[lean][io]")
+{
+    const auto sample = pccd_test::sample_shape(pccd_test::unit_sphere(), 3000, 0.05, 61);
+    const Lean object(pccd_test::columns(sample.points));
+    const std::string path = std::string(PCCD_TEST_TMP_DIR) + "/sphere.pccdlean";
+    object.save(path);
+    const Lean loaded = Lean::load(path);
+    REQUIRE(loaded.size() == object.size());
+    CHECK(loaded.cloud().coordinates() == object.cloud().coordinates());
+    CHECK(loaded.normals() == object.normals());
+    CHECK(loaded.domain_radii() == object.domain_radii());
+    CHECK(loaded.input_indices() == object.input_indices());
+    CHECK(loaded.sampling_radius() == object.sampling_radius());
+    CHECK(loaded.bandwidth() == object.bandwidth());
+    CHECK(loaded.weight().threshold() == object.weight().threshold());
+    CHECK(loaded.surface().fit() == object.surface().fit());
+    CHECK(loaded.noise_estimate() == object.noise_estimate());
+    CHECK(loaded.scan().input_points == object.scan().input_points);
+    CHECK(loaded.orientation().flipped == object.orientation().flipped);
+    CHECK(loaded.normals_given() == object.normals_given());
+    pccd_test::require_same_hierarchy(loaded.hierarchy(), object.hierarchy());
+    CHECK(loaded.memory_bytes() == object.memory_bytes());
+    for (const pccd_test::Query& q : pccd_test::queries_near(pccd_test::unit_sphere(), 100, 0.05, 3)) {
+        const double x = loaded.surface().evaluate(q.x).value, y = object.surface().evaluate(q.x).value;
+        CHECK((x == y || (std::isnan(x) && std::isnan(y)))); // NaN: undefined there, for both
+    }
+    // Every query answers as the saved object did (the same numbers): first hits, distances.
+    const auto& spheres = lean_spheres();
+    for (double d : {1.2, 1.9, 2.05, 2.4}) {
+        INFO("d = " << d);
+        const auto x = PCCD::do_intersect(object, Rigid_transform_3<double>(), spheres.b, shifted(d), {.seed = 2});
+        const auto y = PCCD::do_intersect(loaded, Rigid_transform_3<double>(), spheres.b, shifted(d), {.seed = 2});
+        CHECK(x.status == y.status);
+        CHECK(x.counters.f_evaluations == y.counters.f_evaluations);
+        const auto p = PCCD::distance(object, Rigid_transform_3<double>(), spheres.b, shifted(d), {.intersection = {.seed = 2}});
+        const auto q = PCCD::distance(loaded, Rigid_transform_3<double>(), spheres.b, shifted(d), {.intersection = {.seed = 2}});
+        CHECK(p.status == q.status);
+        CHECK((p.distance == q.distance || (std::isnan(p.distance) && std::isnan(q.distance))));
+    }
+    // Other hierarchy options build that hierarchy; the stored one serves when they are the file's.
+    const Lean spheres_loaded = Lean::load(path, {.leaf_size = 4, .volume = PCCD::Bounding_volume::sphere});
+    CHECK(spheres_loaded.hierarchy().volume() == PCCD::Bounding_volume::sphere);
+    CHECK(spheres_loaded.hierarchy().leaf_size() == 4);
+    pccd_test::require_same_hierarchy(Lean::load(path, {}).hierarchy(), object.hierarchy());
+    CHECK_THROWS_WITH(Lean::load(path, {.leaf_size = 0}), Catch::Matchers::Contains("leaf_size must be >= 1"));
+    // An object without a domain keeps none.
+    const Lean bare(pccd_test::columns(sample.points), PCCD::Point_cloud_object_options{.domain = {.enabled = false}});
+    bare.save(path);
+    CHECK(Lean::load(path).domain_radii().size() == 0);
+    CHECK(!Lean::load(path).hierarchy().has_reach());
+
+    // The other kind's file is named as such, both ways; corruption is caught by the checksum.
+    const std::string geodesic_path = std::string(PCCD_TEST_TMP_DIR) + "/sphere_geodesic.pccdobj";
+    PCCD::Point_cloud_object<>(pccd_test::columns(sample.points)).save(geodesic_path);
+    CHECK_THROWS_WITH(Lean::load(geodesic_path), Catch::Matchers::Contains("load it with Point_cloud_object::load"));
+    object.save(path);
+    CHECK_THROWS_WITH(PCCD::Point_cloud_object<>::load(path),
+                      Catch::Matchers::Contains("load it with Euclidean_point_cloud_object::load"));
+    std::string bytes;
+    {
+        std::ifstream in(path, std::ios::binary);
+        bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    const std::string bad = std::string(PCCD_TEST_TMP_DIR) + "/corrupt.pccdlean";
+    for (std::size_t position : {std::size_t(40), bytes.size() / 2, bytes.size() - 20}) {
+        std::string copy = bytes;
+        copy[position] = char(copy[position] ^ 0x5a);
+        std::ofstream(bad, std::ios::binary).write(copy.data(), std::streamsize(copy.size()));
+        CHECK_THROWS_WITH(Lean::load(bad), Catch::Matchers::Contains("checksum"));
+    }
+    std::ofstream(bad, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size() / 3));
+    CHECK_THROWS_AS(Lean::load(bad), PCCD::File_error);
+    std::ofstream(bad, std::ios::binary) << "OFF\n3 1 0\n";
+    CHECK_THROWS_WITH(Lean::load(bad), Catch::Matchers::Contains("not a PCCD lean object file"));
+    CHECK_THROWS_AS(Lean::load(std::string(PCCD_TEST_TMP_DIR) + "/missing.pccdlean"), PCCD::File_error);
 }

@@ -59,6 +59,8 @@
 // The implicit surface and the preprocessed object
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Euclidean_point_cloud_object.h>
+#include <PCCD/Euclidean_point_cloud_object_class.h>
+#include <PCCD/Euclidean_point_cloud_object_file.h>
 #include <PCCD/Point_cloud_object_class.h>
 #include <PCCD/Point_cloud_object_file.h>
 #include <PCCD/Point_cloud_object_preprocessing.h>

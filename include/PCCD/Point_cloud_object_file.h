@@ -14,6 +14,9 @@ namespace PCCD {
 namespace internal {
 
 inline constexpr char object_magic[8] = {'P', 'C', 'C', 'D', 'O', 'B', 'J', '\0'};
+/// The magic of a lean object's file (Euclidean_point_cloud_object::save,
+/// PCCD/Euclidean_point_cloud_object_file.h).
+inline constexpr char lean_object_magic[8] = {'P', 'C', 'C', 'D', 'L', 'E', 'A', 'N'};
 
 /// A read-only stream buffer over bytes held elsewhere, without copying them (the geodesic section
 /// of a loaded object file, read in place).
@@ -61,13 +64,22 @@ inline void read_scan_section(Binary_reader& in, std::uint64_t n, Scan_estimate&
     in.read(domain->data(), sizeof(double) * std::size_t(radii));
 }
 
-/// The opening of an object file: magic, format version (1 to `newest`), byte-order mark, and the
-/// checksum over the whole file. Returns the version; fails on `in` otherwise.
-inline std::uint32_t read_object_file_header(Binary_reader& in, const std::string& bytes, std::uint32_t newest)
+/// The opening of an object file: magic (`lean`: a lean object's), format version (1 to `newest`),
+/// byte-order mark, and the checksum over the whole file. Returns the version; fails on `in`
+/// otherwise, naming the loader of the other kind's file.
+inline std::uint32_t read_object_file_header(Binary_reader& in, const std::string& bytes, std::uint32_t newest,
+                                             bool lean = false)
 {
     char magic[8];
     in.read(magic, sizeof magic);
-    if (std::memcmp(magic, object_magic, sizeof magic) != 0) in.fail("not a PCCD object file");
+    if (std::memcmp(magic, lean ? lean_object_magic : object_magic, sizeof magic) != 0) {
+        if (!lean && std::memcmp(magic, lean_object_magic, sizeof magic) == 0)
+            in.fail("a lean object's file (Euclidean_point_cloud_object::save): load it with "
+                    "Euclidean_point_cloud_object::load");
+        if (lean && std::memcmp(magic, object_magic, sizeof magic) == 0)
+            in.fail("a Point_cloud_object's file (geodesic kernel): load it with Point_cloud_object::load");
+        in.fail(lean ? "not a PCCD lean object file" : "not a PCCD object file");
+    }
     const auto version = in.get<std::uint32_t>();
     if (version == 0 || version > newest)
         in.fail(concat("object file format version ", version, ", this PCCD reads versions 1 to ", newest));
@@ -120,6 +132,140 @@ inline Point_cloud_hierarchy::Layout read_hierarchy_section(Binary_reader& in, s
     return layout;
 }
 
+/// What an object file holds before its geodesic section (the whole of a lean object's file).
+struct Object_file_parts {
+    std::uint64_t n = 0;
+    double r = 0.0, h = 0.0, theta = 0.0;
+    bool given = false;
+    Orientation_report orientation;
+    Preprocessing_times timings;
+    Eigen::Matrix3Xd points, normals;
+    Scan_estimate scan;
+    std::optional<Eigen::VectorXd> domain;
+    Surface_fit fit = Surface_fit::plane;
+    std::vector<std::uint32_t> input_index;
+    std::optional<Point_cloud_hierarchy::Layout> layout;
+};
+
+/// Reads the parts of a file of format `version` (1 to 5; see the format below), after its header.
+inline Object_file_parts read_object_parts(Binary_reader& in, std::uint32_t version)
+{
+    Object_file_parts p;
+    p.n = in.get<std::uint64_t>();
+    const std::uint64_t n = p.n;
+    if (n < 2 || n >= std::uint64_t(std::numeric_limits<std::uint32_t>::max()) || in.remaining() < 6 * sizeof(double) * n)
+        in.fail(concat("inconsistent point count ", n));
+    p.r = in.get<double>();
+    p.h = in.get<double>();
+    p.theta = in.get<double>();
+    p.given = in.get<std::uint8_t>() != 0;
+    p.orientation.flipped = std::size_t(in.get<std::uint64_t>());
+    p.orientation.components = std::size_t(in.get<std::uint64_t>());
+    p.orientation.unoriented = std::size_t(in.get<std::uint64_t>());
+    for (double* t : {&p.timings.kd_tree, &p.timings.graph, &p.timings.sampling_radius, &p.timings.cpsp, &p.timings.normals})
+        *t = in.get<double>();
+    p.points.resize(3, Eigen::Index(n));
+    p.normals.resize(3, Eigen::Index(n));
+    in.read(p.points.data(), sizeof(double) * 3 * n);
+    in.read(p.normals.data(), sizeof(double) * 3 * n);
+    p.scan.input_points = std::size_t(n);
+    if (version >= 2) read_scan_section(in, n, p.scan, p.domain);
+    if (version >= 3) {
+        const auto stored = in.get<std::uint8_t>();
+        if (stored > std::uint8_t(Surface_fit::imls)) in.fail(concat("unknown surface fit ", int(stored)));
+        p.fit = Surface_fit(stored);
+    }
+    p.input_index.resize(n);
+    if (version >= 4) {
+        read_input_indices(in, p.scan, p.input_index);
+    } else {
+        std::iota(p.input_index.begin(), p.input_index.end(), std::uint32_t(0));
+    }
+    if (version >= 5) p.layout = read_hierarchy_section(in, n);
+    if (!(std::isfinite(p.r) && p.r > 0.0)) in.fail(concat("invalid sampling radius ", p.r));
+    return p;
+}
+
+/// The hierarchy options a load uses: the caller's (`asked`; null: the stored layout's leaf size and
+/// volume), and the stored layout kept in `parts` only when it has those.
+inline Point_cloud_hierarchy_options loaded_hierarchy_options(Object_file_parts& parts, const Point_cloud_hierarchy_options* asked)
+{
+    Point_cloud_hierarchy_options options = asked ? *asked : Point_cloud_hierarchy_options{};
+    if (parts.layout && !asked) options.leaf_size = parts.layout->leaf_size, options.volume = parts.layout->volume;
+    if (parts.layout && (parts.layout->leaf_size != options.leaf_size || parts.layout->volume != options.volume))
+        parts.layout.reset();
+    return options;
+}
+
+/// Writes what read_object_parts() reads (the newest format) of `object`, a Point_cloud_object or
+/// a Euclidean_point_cloud_object (the same accessors).
+template <class Object>
+void write_object_parts(Binary_writer& out, const Object& object)
+{
+    out.put(std::uint64_t(object.size()));
+    out.put(object.sampling_radius());
+    out.put(object.bandwidth());
+    out.put(object.weight().threshold());
+    out.put(std::uint8_t(object.normals_given() ? 1 : 0));
+    out.put(std::uint64_t(object.orientation().flipped));
+    out.put(std::uint64_t(object.orientation().components));
+    out.put(std::uint64_t(object.orientation().unoriented));
+    const Preprocessing_times& t = object.timings();
+    for (double x : {t.kd_tree, t.graph, t.sampling_radius, t.cpsp, t.normals}) out.put(x);
+    const Eigen::Matrix3Xd points = object.cloud().coordinates().template cast<double>();
+    out.write(points.data(), sizeof(double) * std::size_t(points.size()));
+    out.write(object.normals().data(), sizeof(double) * std::size_t(object.normals().size()));
+    const Scan_estimate& scan = object.scan();
+    out.put(scan.noise);
+    out.put(std::uint64_t(scan.input_points));
+    out.put(std::uint64_t(scan.outliers.size()));
+    out.write(scan.outliers.data(), sizeof(std::uint32_t) * scan.outliers.size());
+    out.put(std::uint64_t(object.domain_radii().size()));
+    out.write(object.domain_radii().data(), sizeof(double) * std::size_t(object.domain_radii().size()));
+    out.put(std::uint8_t(object.surface().fit()));
+    out.put(std::uint64_t(object.input_indices().size()));
+    out.write(object.input_indices().data(), sizeof(std::uint32_t) * object.input_indices().size());
+    const Point_cloud_hierarchy::Layout layout = object.hierarchy().layout();
+    out.put(std::uint8_t(layout.volume));
+    out.put(std::uint64_t(layout.leaf_size));
+    out.put(std::uint64_t(layout.counts.size()));
+    out.write(layout.counts.data(), sizeof(std::uint32_t) * layout.counts.size());
+    out.write(layout.rights.data(), sizeof(std::uint32_t) * layout.rights.size());
+    out.write(layout.order.data(), sizeof(std::uint32_t) * layout.order.size());
+}
+
+/// Writes `object`'s file to `path` (replaced if it exists): `magic`, `version`, the byte-order
+/// mark, its parts (write_object_parts()), then `extra` with its size first unless it is null (the
+/// geodesic section), and the checksum.
+template <class Object>
+void write_object_file(const std::string& path, const char (&magic)[8], std::uint32_t version, const Object& object,
+                       const std::string* extra)
+{
+    Binary_writer out;
+    out.write(magic, sizeof magic);
+    out.put(version);
+    out.put(byte_order_mark);
+    write_object_parts(out, object);
+    if (extra) {
+        out.put(std::uint64_t(extra->size()));
+        out.write(extra->data(), extra->size());
+    }
+    out.finish();
+    std::ofstream file(path, std::ios::binary | std::ios::trunc);
+    if (!file) throw File_error(path, "cannot open the file for writing");
+    file.write(out.bytes().data(), std::streamsize(out.bytes().size()));
+    file.close();
+    if (!file) throw File_error(path, "write failed (disk full?)");
+}
+
+/// The hierarchy options of a load() that takes them, checked before the file is read (a bad option
+/// is the caller's error, not the file's); `function` names the load in the message.
+inline void check_load_options(const Point_cloud_hierarchy_options& hierarchy, const char* function)
+{
+    if (hierarchy.leaf_size == 0) throw Invalid_input(concat(function, ": the hierarchy's leaf_size must be >= 1"));
+    check_threads(hierarchy.threads, concat(function, ": the hierarchy's threads").c_str());
+}
+
 } // namespace internal
 
 // File format (version 5, little-endian whatever the host, with a byte-order mark, no padding):
@@ -144,48 +290,7 @@ void Point_cloud_object<K>::save(const std::string& path) const
     internal::write_geodesic_stream(geodesic_stream, path, *d.graph, *d.cpsp);
     const std::string geodesic = std::move(geodesic_stream).str();
 
-    internal::Binary_writer out;
-    out.write(internal::object_magic, sizeof internal::object_magic);
-    out.put(file_version);
-    out.put(internal::byte_order_mark);
-    out.put(std::uint64_t(size()));
-    out.put(d.sampling_radius);
-    out.put(bandwidth());
-    out.put(theta_eps());
-    out.put(std::uint8_t(d.normals_given ? 1 : 0));
-    out.put(std::uint64_t(d.orientation.flipped));
-    out.put(std::uint64_t(d.orientation.components));
-    out.put(std::uint64_t(d.orientation.unoriented));
-    for (double t : {d.timings.kd_tree, d.timings.graph, d.timings.sampling_radius, d.timings.cpsp, d.timings.normals})
-        out.put(t);
-    const Eigen::Matrix3Xd points = d.cloud.coordinates().template cast<double>();
-    out.write(points.data(), sizeof(double) * std::size_t(points.size()));
-    out.write(normals().data(), sizeof(double) * std::size_t(normals().size()));
-    out.put(d.scan.noise);
-    out.put(std::uint64_t(d.scan.input_points));
-    out.put(std::uint64_t(d.scan.outliers.size()));
-    out.write(d.scan.outliers.data(), sizeof(std::uint32_t) * d.scan.outliers.size());
-    out.put(std::uint64_t(domain_radii().size()));
-    out.write(domain_radii().data(), sizeof(double) * std::size_t(domain_radii().size()));
-    out.put(std::uint8_t(surface().fit()));
-    out.put(std::uint64_t(d.input_index.size()));
-    out.write(d.input_index.data(), sizeof(std::uint32_t) * d.input_index.size());
-    const Point_cloud_hierarchy::Layout layout = d.hierarchy.layout();
-    out.put(std::uint8_t(layout.volume));
-    out.put(std::uint64_t(layout.leaf_size));
-    out.put(std::uint64_t(layout.counts.size()));
-    out.write(layout.counts.data(), sizeof(std::uint32_t) * layout.counts.size());
-    out.write(layout.rights.data(), sizeof(std::uint32_t) * layout.rights.size());
-    out.write(layout.order.data(), sizeof(std::uint32_t) * layout.order.size());
-    out.put(std::uint64_t(geodesic.size()));
-    out.write(geodesic.data(), geodesic.size());
-    out.finish();
-
-    std::ofstream file(path, std::ios::binary | std::ios::trunc);
-    if (!file) throw File_error(path, "cannot open the file for writing");
-    file.write(out.bytes().data(), std::streamsize(out.bytes().size()));
-    file.close();
-    if (!file) throw File_error(path, "write failed (disk full?)");
+    internal::write_object_file(path, internal::object_magic, file_version, *this, &geodesic);
 }
 
 template <PointCloudKernel K>
@@ -197,9 +302,7 @@ Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path)
 template <PointCloudKernel K>
 Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path, const Point_cloud_hierarchy_options& hierarchy)
 {
-    // The caller's options are checked before the file, so that a bad option is not blamed on it.
-    if (hierarchy.leaf_size == 0) throw Invalid_input("Point_cloud_object::load: the hierarchy's leaf_size must be >= 1");
-    internal::check_threads(hierarchy.threads, "Point_cloud_object::load: the hierarchy's threads");
+    internal::check_load_options(hierarchy, "Point_cloud_object::load");
     return load_file(path, &hierarchy);
 }
 
@@ -209,51 +312,12 @@ Point_cloud_object<K> Point_cloud_object<K>::load_file(const std::string& path, 
     const std::string bytes = internal::read_binary_file(path);
     internal::Binary_reader in(bytes, path);
     const std::uint32_t version = internal::read_object_file_header(in, bytes, file_version);
-    const auto n = in.get<std::uint64_t>();
-    if (n < 2 || n >= std::uint64_t(std::numeric_limits<std::uint32_t>::max()) ||
-        in.remaining() < 6 * sizeof(double) * n)
-        in.fail(internal::concat("inconsistent point count ", n));
-    const auto r = in.get<double>();
-    const auto h = in.get<double>();
-    const auto theta = in.get<double>();
-    const bool given = in.get<std::uint8_t>() != 0;
-    Orientation_report orientation;
-    orientation.flipped = std::size_t(in.get<std::uint64_t>());
-    orientation.components = std::size_t(in.get<std::uint64_t>());
-    orientation.unoriented = std::size_t(in.get<std::uint64_t>());
-    Preprocessing_times timings;
-    for (double* t : {&timings.kd_tree, &timings.graph, &timings.sampling_radius, &timings.cpsp, &timings.normals})
-        *t = in.get<double>();
-    Eigen::Matrix3Xd points(3, Eigen::Index(n)), normals(3, Eigen::Index(n));
-    in.read(points.data(), sizeof(double) * 3 * n);
-    in.read(normals.data(), sizeof(double) * 3 * n);
-    Scan_estimate scan;
-    scan.input_points = std::size_t(n);
-    std::optional<Eigen::VectorXd> domain;
-    if (version >= 2) internal::read_scan_section(in, n, scan, domain);
-    Surface_fit fit = Surface_fit::plane;
-    if (version >= 3) {
-        const auto stored = in.get<std::uint8_t>();
-        if (stored > std::uint8_t(Surface_fit::imls)) in.fail(internal::concat("unknown surface fit ", int(stored)));
-        fit = Surface_fit(stored);
-    }
-    std::vector<std::uint32_t> input_index(n);
-    if (version >= 4) {
-        internal::read_input_indices(in, scan, input_index);
-    } else {
-        std::iota(input_index.begin(), input_index.end(), std::uint32_t(0));
-    }
-    std::optional<Point_cloud_hierarchy::Layout> layout;
-    if (version >= 5) layout = internal::read_hierarchy_section(in, n);
-    // The stored tree serves unless the caller asks for another leaf size or volume.
-    Point_cloud_hierarchy_options hierarchy_options = hierarchy ? *hierarchy : Point_cloud_hierarchy_options{};
-    if (layout && !hierarchy) hierarchy_options.leaf_size = layout->leaf_size, hierarchy_options.volume = layout->volume;
-    if (layout && (layout->leaf_size != hierarchy_options.leaf_size || layout->volume != hierarchy_options.volume))
-        layout.reset();
+    internal::Object_file_parts parts = internal::read_object_parts(in, version);
+    const Point_cloud_hierarchy_options hierarchy_options = internal::loaded_hierarchy_options(parts, hierarchy);
+    const std::uint64_t n = parts.n;
     const auto geodesic_size = in.get<std::uint64_t>();
     if (in.remaining() < sizeof(std::uint64_t) || in.remaining() - sizeof(std::uint64_t) != geodesic_size)
         in.fail("inconsistent size of the geodesic section");
-    if (!(std::isfinite(r) && r > 0.0)) in.fail(internal::concat("invalid sampling radius ", r));
 
     internal::Span_streambuf geodesic_section(bytes.data() + in.position(), geodesic_size);
     std::istream geodesic_stream(&geodesic_section);
@@ -263,17 +327,17 @@ Point_cloud_object<K> Point_cloud_object<K>::load_file(const std::string& path, 
 
     try {
         const auto start = internal::Steady_clock::now();
-        Point_cloud<K> cloud(typename Point_cloud<K>::Coordinates(points.template cast<FT>()));
-        timings.kd_tree = internal::ms_since(start);
-        const Gaussian_weight weight(h, theta);
+        Point_cloud<K> cloud(typename Point_cloud<K>::Coordinates(parts.points.template cast<FT>()));
+        parts.timings.kd_tree = internal::ms_since(start);
+        const Gaussian_weight weight(parts.h, parts.theta);
         auto cpsp = std::make_shared<const Close_pairs_shortest_paths>(std::move(geodesic.cpsp));
         auto graph = std::make_shared<const Proximity_graph>(std::move(geodesic.graph));
-        if (!domain) domain = surface_domain_radii(cloud);
+        if (!parts.domain) parts.domain = surface_domain_radii(cloud);
         return Point_cloud_object(std::make_shared<const Data>(
-            make_data(std::move(cloud), std::move(graph), std::move(cpsp), r, weight, std::move(normals),
-                      std::move(*domain), orientation, given, std::move(scan), timings,
-                      Point_cloud_object_options{.surface_fit = fit, .hierarchy = hierarchy_options}, std::move(input_index),
-                      layout ? &*layout : nullptr)));
+            make_data(std::move(cloud), std::move(graph), std::move(cpsp), parts.r, weight, std::move(parts.normals),
+                      std::move(*parts.domain), parts.orientation, parts.given, std::move(parts.scan), parts.timings,
+                      Point_cloud_object_options{.surface_fit = parts.fit, .hierarchy = hierarchy_options},
+                      std::move(parts.input_index), parts.layout ? &*parts.layout : nullptr)));
     } catch (const File_error&) {
         throw;
     } catch (const Invalid_input& e) {

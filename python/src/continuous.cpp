@@ -61,8 +61,8 @@ struct Motion_case {
 };
 
 /// The C++ object of a pccd.Object or pccd.LeanObject `o` (setting `lean` for the latter);
-/// TypeError "<where>: <what> must be ..." for anything else.
-const void* motion_object(const py::handle& o, bool& lean, const std::string& where, const char* what)
+/// TypeError "<where>: <requirement>, not <type>" for anything else.
+const void* motion_object(const py::handle& o, bool& lean, const std::string& where, const char* requirement)
 {
     lean = false;
     if (py::isinstance<Object>(o)) return &o.cast<const Object&>();
@@ -70,7 +70,7 @@ const void* motion_object(const py::handle& o, bool& lean, const std::string& wh
         lean = true;
         return &o.cast<const Lean_object&>();
     }
-    throw py::type_error(where + ": " + what + " must be pccd.Object or pccd.LeanObject instances, not " +
+    throw py::type_error(where + ": " + requirement + ", not " +
                          std::string(py::str(py::type::handle_of(o).attr("__name__"))));
 }
 
@@ -371,8 +371,8 @@ void add_continuous(py::module_& m)
                 throw py::value_error(std::string(function) + "(): " + (centre_a.is_none() ? "centre_b" : "centre_a") +
                                       " applies to motion='linear' only (a screw turns about its own axis)");
             Motion_case c;
-            c.a = motion_object(a, c.lean_a, function + std::string("()"), "a");
-            c.b = motion_object(b, c.lean_b, function + std::string("()"), "b");
+            c.a = motion_object(a, c.lean_a, function + std::string("()"), "a must be a pccd.Object or a pccd.LeanObject");
+            c.b = motion_object(b, c.lean_b, function + std::string("()"), "b must be a pccd.Object or a pccd.LeanObject");
             c.motion_a = motion_argument(motion_a, "motion_a");
             c.motion_b = motion_argument(motion_b, "motion_b");
             c.motion_a.centre = centre_argument(centre_a, "centre_a");
@@ -418,8 +418,9 @@ void add_continuous(py::module_& m)
                 const py::object a = pair[0];
                 const py::object b = pair[2];
                 Motion_case c;
-                c.a = motion_object(a, c.lean_a, where, "items 0 and 2");
-                c.b = motion_object(b, c.lean_b, where, "items 0 and 2");
+                const char* requirement = "items 0 and 2 must be pccd.Object or pccd.LeanObject instances";
+                c.a = motion_object(a, c.lean_a, where, requirement);
+                c.b = motion_object(b, c.lean_b, where, requirement);
                 try {
                     c.motion_a = motion_argument(pair[1], "motion_a");
                     c.motion_b = motion_argument(pair[3], "motion_b");

@@ -11,13 +11,16 @@
 #include <PCCD/Intersection/do_intersect_many.h>
 #include <PCCD/sharp_feature_options.h>
 
+#include <algorithm>
 #include <cstddef>
+#include <deque>
 #include <functional>
 #include <map>
 #include <optional>
 #include <ranges>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace pccd_python {
 
@@ -75,10 +78,9 @@ PCCD::Point_cloud_object_options object_options(const py::kwargs& kwargs, const 
         {"surface_fit",
          [](auto& o, const py::handle& v, const std::string& k, const std::string& who) {
              const auto name = option_value<std::string>(v, k, who);
-             if (name == "sphere") o.surface_fit = PCCD::Surface_fit::sphere;
-             else if (name == "plane") o.surface_fit = PCCD::Surface_fit::plane;
-             else if (name == "imls") o.surface_fit = PCCD::Surface_fit::imls;
-             else throw py::value_error(who + "(): surface_fit must be 'sphere', 'plane' or 'imls', not '" + name + "'");
+             const std::optional<PCCD::Surface_fit> fit = PCCD::surface_fit_from_string(name);
+             if (!fit) throw py::value_error(who + "(): surface_fit must be 'sphere', 'plane' or 'imls', not '" + name + "'");
+             o.surface_fit = *fit;
          }},
         {"normal_bandwidth",
          [](auto& o, const py::handle& v, const std::string& k, const std::string& who) { o.normal_bandwidth = option_value<double>(v, k, who); }},
@@ -372,8 +374,10 @@ LeanObject); the batch functions and ``pccd.World`` take Object pairs only.
 
 What it gives up: the Euclidean kernel bleeds across gaps thinner than twice the support radius
 (two faces of a thin wall, fingers that nearly touch), where the geodesic kernel keeps them apart,
-and it rounds sharp edges a little more; there is no ``save``/``load``. Use it from about 10^6
-points, where the geodesic map dominates the memory and walls are many spacings thick.
+and it rounds sharp edges a little more. ``save``/``load`` keep it in a file of its own kind (about
+150 bytes per point; loading rebuilds the kd-tree and the hierarchy from the file, far faster than
+the preprocessing). Use it from about 10^6 points, where the geodesic map dominates the memory and
+walls are many spacings thick.
 
 Parameters
 ----------
@@ -397,78 +401,62 @@ Examples
 >>> pccd.distance(part, pose, scan, None).distance
 )doc";
 
+/// save() and the static load() of pccd.Object and pccd.LeanObject (each reads its own kind's files).
+template <class T>
+void add_files(py::class_<T>& c, const std::string& name, const std::string& extra_contents)
+{
+    static std::deque<std::string> docs; // pybind11 keeps the pointers: the strings must live on, unmoved
+    docs.push_back("Write the object to a binary file (replaced if it exists).\n\nThe file holds the points, normals, "
+                   "parameters, timings, " + extra_contents + "domain radii and the hierarchy's layout, with a\n"
+                   "checksum; ``" + name + ".load`` reads it back bit for bit (the kd-tree is rebuilt, the hierarchy "
+                   "from its\nstored layout).\n\nParameters\n----------\npath : str or os.PathLike\n    The file to "
+                   "write.\n\nRaises\n------\nOSError\n    The file cannot be written.\n");
+    const char* save_doc = docs.back().c_str();
+    docs.push_back("Read an object written by ``" + name + ".save``.\n\nParameters\n----------\npath : str or "
+                   "os.PathLike\n    The file to read.\nleaf_size : int, optional\n    Largest number of points in a "
+                   "hierarchy leaf.\nvolume : str, optional\n    'box_and_slab', 'box' or 'sphere'. With neither given "
+                   "(default), the hierarchy the file stores\n    is rebuilt from its layout. Giving either asks for a "
+                   "hierarchy with the values given and the\n    defaults (8, 'box_and_slab') for the other: the stored "
+                   "one when they are the file's, otherwise\n    a new build.\n\nReturns\n-------\n" + name +
+                   "\n    The object, answering every query exactly as the one that was saved.\n\nRaises\n------\n"
+                   "OSError\n    The file is missing, not a PCCD " + (name == "Object" ? "object" : "lean object") +
+                   " file (the other kind's file is named as such), of\n    another format version, truncated, "
+                   "corrupted (checksum) or inconsistent; the message names\n    the file and the problem.\n");
+    const char* load_doc = docs.back().c_str();
+    c.def(
+         "save",
+         [name](const T& self, const py::object& path) {
+             const std::string file = path_argument(path, (name + ".save").c_str(), "path");
+             py::gil_scoped_release release;
+             self.save(file);
+         },
+         py::arg("path"), save_doc)
+        .def_static(
+            "load",
+            [name](const py::object& path, std::optional<std::size_t> leaf_size, std::optional<std::string> volume) {
+                const std::string file = path_argument(path, (name + ".load").c_str(), "path");
+                std::optional<PCCD::Point_cloud_hierarchy_options> hierarchy;
+                if (leaf_size || volume) {
+                    hierarchy.emplace();
+                    if (leaf_size) hierarchy->leaf_size = *leaf_size;
+                    if (volume) hierarchy->volume = volume_of(*volume, name + ".load()");
+                }
+                py::gil_scoped_release release;
+                return hierarchy ? T::load(file, *hierarchy) : T::load(file);
+            },
+            py::arg("path"), py::kw_only(), py::arg("leaf_size") = py::none(), py::arg("volume") = py::none(), load_doc);
+}
+
 } // namespace
 
 void add_object(py::module_& m)
 {
     py::class_<Object> object(m, "Object", object_doc);
-    object
-        .def(py::init([](const py::object& points, const py::object& normals, const py::kwargs& kwargs) {
-                 return build(points, normals, kwargs);
-             }),
-             py::arg("points"), py::arg("normals") = py::none())
-        .def(
-            "save",
-            [](const Object& self, const py::object& path) {
-                const std::string file = path_argument(path, "Object.save", "path");
-                py::gil_scoped_release release;
-                self.save(file);
-            },
-            py::arg("path"), R"doc(Write the object to a binary file (replaced if it exists).
-
-The file holds the points, normals, parameters, timings, graph and geodesic map, with a
-checksum; ``Object.load`` reads it back bit for bit (the kd-tree is rebuilt, the hierarchy from its
-stored layout).
-
-Parameters
-----------
-path : str or os.PathLike
-    The file to write.
-
-Raises
-------
-OSError
-    The file cannot be written.
-)doc")
-        .def_static(
-            "load",
-            [](const py::object& path, std::optional<std::size_t> leaf_size, std::optional<std::string> volume) {
-                const std::string file = path_argument(path, "Object.load", "path");
-                std::optional<PCCD::Point_cloud_hierarchy_options> hierarchy;
-                if (leaf_size || volume) {
-                    hierarchy.emplace();
-                    if (leaf_size) hierarchy->leaf_size = *leaf_size;
-                    if (volume) hierarchy->volume = volume_of(*volume, "Object.load()");
-                }
-                py::gil_scoped_release release;
-                return hierarchy ? Object::load(file, *hierarchy) : Object::load(file);
-            },
-            py::arg("path"), py::kw_only(), py::arg("leaf_size") = py::none(), py::arg("volume") = py::none(),
-            R"doc(Read an object written by ``Object.save``.
-
-Parameters
-----------
-path : str or os.PathLike
-    The file to read.
-leaf_size : int, optional
-    Largest number of points in a hierarchy leaf.
-volume : str, optional
-    'box_and_slab', 'box' or 'sphere'. With neither given (default), the hierarchy the file stores
-    is rebuilt from its layout. Giving either asks for a hierarchy with the values given and the
-    defaults (8, 'box_and_slab') for the other: the stored one when they are the file's, otherwise
-    a new build.
-
-Returns
--------
-Object
-    The object, answering every query exactly as the one that was saved.
-
-Raises
-------
-OSError
-    The file is missing, not a PCCD object file, of another format version, truncated,
-    corrupted (checksum) or inconsistent; the message names the file and the problem.
-)doc");
+    object.def(py::init([](const py::object& points, const py::object& normals, const py::kwargs& kwargs) {
+                   return build(points, normals, kwargs);
+               }),
+               py::arg("points"), py::arg("normals") = py::none());
+    add_files(object, "Object", "graph and geodesic map, ");
     add_shared_members(object, "Object");
 
     py::class_<Lean_object> lean(m, "LeanObject", lean_object_doc);
@@ -477,6 +465,7 @@ OSError
              }),
              py::arg("points"), py::arg("normals") = py::none());
     add_shared_members(lean, "LeanObject");
+    add_files(lean, "LeanObject", "");
     lean.def_property_readonly("memory_bytes", &Lean_object::memory_bytes,
                                "int: Bytes the object holds (points, kd-tree, input indices, normals, domain radii, "
                                "hierarchy).");

@@ -275,6 +275,11 @@ TEST_CASE("Point_cloud_object fits spheres by default, and an unknown fit is ref
     CHECK(object.euclidean_surface().fit() == PCCD::Surface_fit::sphere);
     CHECK(std::string(PCCD::to_string(PCCD::Surface_fit::sphere)) == "sphere");
     CHECK(std::string(PCCD::to_string(PCCD::Surface_fit::plane)) == "plane");
+    // surface_fit_from_string() reads what to_string() writes, and nothing else.
+    for (const auto fit : {PCCD::Surface_fit::plane, PCCD::Surface_fit::sphere, PCCD::Surface_fit::imls})
+        CHECK(PCCD::surface_fit_from_string(PCCD::to_string(fit)) == fit);
+    for (const char* other : {"", "Sphere", "imls ", "unknown", "rimls"})
+        CHECK(!PCCD::surface_fit_from_string(other).has_value());
     const PCCD::Point_cloud<> cloud(sample.points);
     CHECK_THROWS_AS(PCCD::WLS_surface<PCCD::Euclidean_distance<>>(PCCD::Euclidean_distance<>(cloud),
                                                                   PCCD::Gaussian_weight(0.1, 0.01), sample.normals,

@@ -227,22 +227,21 @@ elseif(CASE STREQUAL "kernel_option")
   endforeach()
   # --kernel-a / --kernel-b: one object of each kind. The mixed pair answers as both kinds do (the
   # distance of surfaces 1 apart, the verdicts); the same file under two kernels is built twice.
+  function(expect_kernels expected_a expected_b)
+    string(JSON kernel_a GET "${PCCD_STDOUT}" a kernel)
+    string(JSON kernel_b GET "${PCCD_STDOUT}" b kernel)
+    if(NOT kernel_a STREQUAL expected_a OR NOT kernel_b STREQUAL expected_b)
+      message(FATAL_ERROR "expected a ${expected_a} A and a ${expected_b} B, built ${kernel_a} and ${kernel_b}")
+    endif()
+  endfunction()
   pccd_run(OK ARGS distance sphere.xyz torus.ply --transform-b ${shift_3} --kernel-a geodesic --kernel-b euclidean --json
            MATCH "\"status\": \"separate\"" "\"same_object\": false")
-  string(JSON kernel_a GET "${PCCD_STDOUT}" a kernel)
-  string(JSON kernel_b GET "${PCCD_STDOUT}" b kernel)
-  if(NOT kernel_a STREQUAL "geodesic" OR NOT kernel_b STREQUAL "euclidean")
-    message(FATAL_ERROR "--kernel-a geodesic --kernel-b euclidean built ${kernel_a} and ${kernel_b}")
-  endif()
+  expect_kernels(geodesic euclidean)
   pccd_json_number(distance "${PCCD_STDOUT}" distance)
   pccd_expect_between(${distance} 0.97 1.03 "the mixed pair's distance of surfaces 1 apart")
   pccd_run(OK ARGS collide sphere.xyz sphere.xyz --transform-b ${shift_1} --kernel-a euclidean --json
            MATCH "\"intersects\": true" "\"same_object\": false")
-  string(JSON kernel_a GET "${PCCD_STDOUT}" a kernel)
-  string(JSON kernel_b GET "${PCCD_STDOUT}" b kernel)
-  if(NOT kernel_a STREQUAL "euclidean" OR NOT kernel_b STREQUAL "geodesic")
-    message(FATAL_ERROR "--kernel-a euclidean (B auto) built ${kernel_a} and ${kernel_b}")
-  endif()
+  expect_kernels(euclidean geodesic) # B: auto, below 10^6 points
   pccd_run(OK ARGS collide sphere.xyz torus.ply --transform-b ${shift_1} --kernel-b euclidean --method rst
            STDOUT_MATCH "A: sphere.xyz, 2000 points, geodesic kernel" "B: torus.ply, 2000 points, euclidean kernel"
                         "answer: intersecting")

@@ -2,8 +2,8 @@
 from the same arguments as pccd.Object; every single-pair query, the batches and time_of_contact
 take it, alone or beside an Object, and answer against independent truths -- sampled spheres at
 known poses, whose gaps, penetration and first contact times are known in closed form; the mixed
-batches equal the single calls seeded by pair_seed; it needs a fraction of an Object's memory; bad
-arguments get a clear TypeError or ValueError."""
+batches equal the single calls seeded by pair_seed; it needs a fraction of an Object's memory; it is
+saved and loaded bit for bit; bad arguments get a clear TypeError or ValueError."""
 
 import math
 
@@ -165,6 +165,35 @@ def test_bad_arguments(balls):
         pccd.distance(lean, None, geodesic, np.full((3, 4), np.nan))
     with pytest.raises(TypeError, match=r"pairs\[1\]: items 0 and 2 must be pccd.Object or pccd.LeanObject"):
         pccd.do_intersect_many([(lean, None, lean, None), (lean, None, 2.0, None)])
+    with pytest.raises(TypeError, match=r"time_of_contact\(\): b must be a pccd.Object or a pccd.LeanObject, not int"):
+        pccd.time_of_contact(lean, (None, None), 3, (None, None))
+    with pytest.raises(TypeError, match=r"pairs\[0\]: items 0 and 2 must be pccd.Object or pccd.LeanObject instances"):
+        pccd.time_of_contact_many([(lean, (None, None), "ball", (None, None))])
     with pytest.raises(TypeError, match="a World holds pccd.Object instances only"):
         pccd.World().insert(lean, None)
-    assert not hasattr(lean, "save") and not hasattr(pccd.LeanObject, "load")
+    with pytest.raises(TypeError, match="LeanObject.save"):
+        lean.save(None)
+
+
+def test_a_saved_lean_object_loads_back_and_answers_as_it_did(balls, tmp_path):
+    geodesic, lean = balls
+    path = tmp_path / "ball.pccdlean"
+    lean.save(path)
+    loaded = pccd.LeanObject.load(str(path))
+    assert isinstance(loaded, pccd.LeanObject) and loaded.size == lean.size
+    assert np.array_equal(loaded.points, lean.points) and np.array_equal(loaded.normals, lean.normals)
+    assert loaded.memory_bytes == lean.memory_bytes and loaded.leaf_size == lean.leaf_size
+    for x in (0.8, 1.2):
+        assert same_result(pccd.do_intersect(loaded, None, geodesic, at(x), seed=4),
+                           pccd.do_intersect(lean, None, geodesic, at(x), seed=4))
+        assert pccd.distance(loaded, None, lean, at(x), seed=4).distance == pccd.distance(lean, None, lean, at(x), seed=4).distance
+    assert pccd.LeanObject.load(path, leaf_size=4, volume="sphere").volume == "sphere"
+    # Each kind reads its own files and names the other's.
+    geodesic_path = tmp_path / "ball.pccdobj"
+    geodesic.save(geodesic_path)
+    with pytest.raises(OSError, match="load it with Point_cloud_object::load"):
+        pccd.LeanObject.load(geodesic_path)
+    with pytest.raises(OSError, match="load it with Euclidean_point_cloud_object::load"):
+        pccd.Object.load(path)
+    with pytest.raises(OSError):
+        pccd.LeanObject.load(tmp_path / "missing.pccdlean")

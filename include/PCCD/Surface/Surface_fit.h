@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <string_view>
 
 #include <Eigen/Core>
 
@@ -26,6 +27,14 @@ inline const char* to_string(Surface_fit fit)
     case Surface_fit::imls: return "imls";
     }
     return "unknown";
+}
+
+/// The fit to_string() names `name` ("plane", "sphere" or "imls"); nullopt for anything else.
+inline std::optional<Surface_fit> surface_fit_from_string(std::string_view name)
+{
+    for (const auto fit : {Surface_fit::plane, Surface_fit::sphere, Surface_fit::imls})
+        if (name == to_string(fit)) return fit;
+    return std::nullopt;
 }
 
 namespace internal {
