@@ -32,8 +32,13 @@ def stub_names(tree):
     return names
 
 
-def class_members(node):
-    return {n.name for n in node.body if isinstance(n, ast.FunctionDef)}
+def class_members(node, names=None):
+    """The methods and properties a stubbed class defines, with those of its stubbed bases."""
+    members = {n.name for n in node.body if isinstance(n, ast.FunctionDef)}
+    for base in node.bases:
+        if names is not None and isinstance(base, ast.Name) and base.id in names:
+            members |= class_members(names[base.id], names)
+    return members
 
 
 def test_the_stubs_name_every_public_attribute_and_nothing_else():
@@ -47,7 +52,7 @@ def test_the_stubs_name_every_public_attribute_and_nothing_else():
                 compiled.ContactResult, compiled.Contact, compiled.World, compiled.WorldHandle,
                 compiled.ContactTimeResult, compiled.ClearanceProfile):
         members = public(dir(cls))
-        stubbed_members = {m for m in class_members(names[cls.__name__]) if not m.startswith("_")}
+        stubbed_members = {m for m in class_members(names[cls.__name__], names) if not m.startswith("_")}
         assert members - stubbed_members == set(), f"{cls.__name__}: not in the stubs: {sorted(members - stubbed_members)}"
         assert stubbed_members - members == set(), f"{cls.__name__}: in the stubs only: {sorted(stubbed_members - members)}"
 
