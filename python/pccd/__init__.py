@@ -18,7 +18,8 @@ Object
     A preprocessed point cloud; ``Object.save`` / ``Object.load`` keep it in a file.
 LeanObject
     The lean object for large scans (from about 10^6 points): the Euclidean kernel, about a fifth
-    of an Object's memory; the single-pair queries take it, alone or beside an Object.
+    of an Object's memory; every query but World takes it, alone or beside an Object;
+    ``LeanObject.save`` / ``LeanObject.load`` keep it in a file.
 do_intersect
     Whether two posed objects intersect (stops at the first point found).
 intersection_points

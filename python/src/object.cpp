@@ -370,7 +370,7 @@ neighbours by their straight-line distance instead of their distance along the s
 object keeps only the points, kd-tree, normals, domain radii and hierarchy (about 150-170 bytes per
 point against 700-870 for an Object; 1.65 GB at 10^7 points). Every query that takes an Object
 takes a LeanObject, and a mix of the two (a part as an Object beside a large scan as a
-LeanObject); the batch functions and ``pccd.World`` take Object pairs only.
+LeanObject), the batch functions' pair lists included; ``pccd.World`` holds Objects only.
 
 What it gives up: the Euclidean kernel bleeds across gaps thinner than twice the support radius
 (two faces of a thin wall, fingers that nearly touch), where the geodesic kernel keeps them apart,
