@@ -49,30 +49,13 @@ struct Motion_poses {
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();
 };
 
-/// One query: the objects (kept alive by `keep`; each a pccd.Object, or a pccd.LeanObject when
-/// its `lean` flag is set) and their motions.
+/// One query: the objects (kept alive by `keep`) and their motions.
 struct Motion_case {
-    const void* a = nullptr;
-    bool lean_a = false;
+    Any_object a;
     Motion_poses motion_a;
-    const void* b = nullptr;
-    bool lean_b = false;
+    Any_object b;
     Motion_poses motion_b;
 };
-
-/// The C++ object of a pccd.Object or pccd.LeanObject `o` (setting `lean` for the latter);
-/// TypeError "<where>: <requirement>, not <type>" for anything else.
-const void* motion_object(const py::handle& o, bool& lean, const std::string& where, const char* requirement)
-{
-    lean = false;
-    if (py::isinstance<Object>(o)) return &o.cast<const Object&>();
-    if (py::isinstance<Lean_object>(o)) {
-        lean = true;
-        return &o.cast<const Lean_object&>();
-    }
-    throw py::type_error(where + ": " + requirement + ", not " +
-                         std::string(py::str(py::type::handle_of(o).attr("__name__"))));
-}
 
 /// The length of a sequence argument, or -1 for anything else (a str or bytes, a 0-d array, ...).
 Py_ssize_t sequence_length(py::handle value)
@@ -155,27 +138,15 @@ PCCD::Contact_time_options contact_time_options(double tolerance, const std::opt
 }
 
 /// PCCD::time_of_contact on one case, both objects moving linearly or both by screws.
-template <class A, class B>
-PCCD::Contact_time_result run_typed_case(const A& a, const B& b, const Motion_case& c, bool screw,
-                                         const PCCD::Contact_time_options& options)
-{
-    if (screw)
-        return PCCD::time_of_contact(a, PCCD::Screw_motion(c.motion_a.from, c.motion_a.to), b,
-                                     PCCD::Screw_motion(c.motion_b.from, c.motion_b.to), options);
-    return PCCD::time_of_contact(a, PCCD::Linear_motion(c.motion_a.from, c.motion_a.to, c.motion_a.centre), b,
-                                 PCCD::Linear_motion(c.motion_b.from, c.motion_b.to, c.motion_b.centre), options);
-}
-
 PCCD::Contact_time_result run_case(const Motion_case& c, bool screw, const PCCD::Contact_time_options& options)
 {
-    const auto* ga = static_cast<const Object*>(c.a);
-    const auto* gb = static_cast<const Object*>(c.b);
-    const auto* la = static_cast<const Lean_object*>(c.a);
-    const auto* lb = static_cast<const Lean_object*>(c.b);
-    if (!c.lean_a && !c.lean_b) return run_typed_case(*ga, *gb, c, screw, options);
-    if (!c.lean_a) return run_typed_case(*ga, *lb, c, screw, options);
-    if (!c.lean_b) return run_typed_case(*la, *gb, c, screw, options);
-    return run_typed_case(*la, *lb, c, screw, options);
+    return visit_objects(c.a, c.b, [&](const auto& a, const auto& b) {
+        if (screw)
+            return PCCD::time_of_contact(a, PCCD::Screw_motion(c.motion_a.from, c.motion_a.to), b,
+                                         PCCD::Screw_motion(c.motion_b.from, c.motion_b.to), options);
+        return PCCD::time_of_contact(a, PCCD::Linear_motion(c.motion_a.from, c.motion_a.to, c.motion_a.centre), b,
+                                     PCCD::Linear_motion(c.motion_b.from, c.motion_b.to, c.motion_b.centre), options);
+    });
 }
 
 py::array_t<double> vector_array(const Eigen::Vector3d& v)
@@ -371,8 +342,8 @@ void add_continuous(py::module_& m)
                 throw py::value_error(std::string(function) + "(): " + (centre_a.is_none() ? "centre_b" : "centre_a") +
                                       " applies to motion='linear' only (a screw turns about its own axis)");
             Motion_case c;
-            c.a = motion_object(a, c.lean_a, function + std::string("()"), "a must be a pccd.Object or a pccd.LeanObject");
-            c.b = motion_object(b, c.lean_b, function + std::string("()"), "b must be a pccd.Object or a pccd.LeanObject");
+            c.a = any_object(a, function + std::string("()"), "a must be a pccd.Object or a pccd.LeanObject");
+            c.b = any_object(b, function + std::string("()"), "b must be a pccd.Object or a pccd.LeanObject");
             c.motion_a = motion_argument(motion_a, "motion_a");
             c.motion_b = motion_argument(motion_b, "motion_b");
             c.motion_a.centre = centre_argument(centre_a, "centre_a");
@@ -419,8 +390,8 @@ void add_continuous(py::module_& m)
                 const py::object b = pair[2];
                 Motion_case c;
                 const char* requirement = "items 0 and 2 must be pccd.Object or pccd.LeanObject instances";
-                c.a = motion_object(a, c.lean_a, where, requirement);
-                c.b = motion_object(b, c.lean_b, where, requirement);
+                c.a = any_object(a, where, requirement);
+                c.b = any_object(b, where, requirement);
                 try {
                     c.motion_a = motion_argument(pair[1], "motion_a");
                     c.motion_b = motion_argument(pair[3], "motion_b");

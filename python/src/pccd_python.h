@@ -28,25 +28,46 @@ using Object = PCCD::Point_cloud_object<>;
 /// The lean object of pccd.LeanObject (the Euclidean kernel, no geodesic map).
 using Lean_object = PCCD::Euclidean_point_cloud_object<>;
 
-/// Calls `f(object)` with the pccd.Object or pccd.LeanObject `value` holds (as a const reference to
-/// its C++ object). Raises TypeError "<function>(): <name> must be a pccd.Object or a
-/// pccd.LeanObject, not <type>" for anything else.
-template <class F>
-decltype(auto) with_object(py::handle value, const char* function, const char* name, F&& f)
+/// The C++ object of a pccd.Object or pccd.LeanObject, and which of the two it is (what a query
+/// keeps of its Python arguments while the GIL is released; the Python object keeps it alive).
+struct Any_object {
+    const void* object = nullptr;
+    bool lean = false;
+};
+
+/// The C++ object `value` holds. Raises TypeError "<where>: <requirement>, not <type>" for
+/// anything but a pccd.Object or a pccd.LeanObject.
+inline Any_object any_object(py::handle value, const std::string& where, const std::string& requirement)
 {
-    if (py::isinstance<Object>(value)) return f(value.cast<const Object&>());
-    if (py::isinstance<Lean_object>(value)) return f(value.cast<const Lean_object&>());
-    throw py::type_error(std::string(function) + "(): " + name + " must be a pccd.Object or a pccd.LeanObject, not " +
+    if (py::isinstance<Object>(value)) return {&value.cast<const Object&>(), false};
+    if (py::isinstance<Lean_object>(value)) return {&value.cast<const Lean_object&>(), true};
+    throw py::type_error(where + ": " + requirement + ", not " +
                          std::string(py::str(py::type::handle_of(value).attr("__name__"))));
 }
 
-/// with_object() for the two objects of a query: `f(a, b)` with each one's C++ type.
+/// Calls `f(a, b)` with the two objects as const references to their C++ types.
+template <class F>
+decltype(auto) visit_objects(const Any_object& a, const Any_object& b, F&& f)
+{
+    const auto geodesic = [](const Any_object& o) -> const Object& { return *static_cast<const Object*>(o.object); };
+    const auto lean = [](const Any_object& o) -> const Lean_object& { return *static_cast<const Lean_object*>(o.object); };
+    if (!a.lean && !b.lean) return f(geodesic(a), geodesic(b));
+    if (!a.lean) return f(geodesic(a), lean(b));
+    if (!b.lean) return f(lean(a), geodesic(b));
+    return f(lean(a), lean(b));
+}
+
+/// The two objects of a query, `f(a, b)` with each one's C++ type. Raises TypeError
+/// "<function>(): <name> must be a pccd.Object or a pccd.LeanObject, not <type>" (a first) for
+/// anything else.
 template <class F>
 decltype(auto) with_objects(py::handle a, const char* name_a, py::handle b, const char* name_b, const char* function, F&& f)
 {
-    return with_object(a, function, name_a, [&](const auto& object_a) -> decltype(auto) {
-        return with_object(b, function, name_b, [&](const auto& object_b) -> decltype(auto) { return f(object_a, object_b); });
-    });
+    const std::string where = std::string(function) + "()";
+    const char* requirement = " must be a pccd.Object or a pccd.LeanObject";
+    const Any_object object_a = any_object(a, where, name_a + std::string(requirement));
+    const Any_object object_b = any_object(b, where, name_b + std::string(requirement));
+    return visit_objects(object_a, object_b, f);
 }
 
 /// An (N, 3) array argument read in place: float32 or float64 rows at any strides. Other numeric

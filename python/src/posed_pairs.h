@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -18,11 +19,9 @@ namespace pccd_python {
 
 /// One pair of a batch call, either object a pccd.Object or a pccd.LeanObject.
 struct Any_posed_pair {
-    const void* a = nullptr;
-    bool lean_a = false;
+    Any_object a;
     PCCD::Rigid_transform_3<double> pose_a;
-    const void* b = nullptr;
-    bool lean_b = false;
+    Any_object b;
     PCCD::Rigid_transform_3<double> pose_b;
 };
 
@@ -47,7 +46,7 @@ void run_kinds(const Posed_pairs& posed, std::size_t begin, std::size_t end, std
     list.reserve(end - begin);
     for (std::size_t i = begin; i < end; ++i) {
         const Any_posed_pair& p = posed.pairs[i];
-        list.push_back({static_cast<const A*>(p.a), p.pose_a, static_cast<const B*>(p.b), p.pose_b});
+        list.push_back({static_cast<const A*>(p.a.object), p.pose_a, static_cast<const B*>(p.b.object), p.pose_b});
     }
     std::vector<Result> results = run(std::span<const PCCD::Posed_pair<A, B>>(list), first_index + begin);
     for (Result& r : results) out.push_back(std::move(r));
@@ -66,13 +65,15 @@ std::vector<Result> run_posed_pairs(const Posed_pairs& posed, std::uint64_t firs
     std::vector<Result> out;
     out.reserve(posed.pairs.size());
     for (std::size_t begin = 0; begin < posed.pairs.size();) {
-        const bool lean_a = posed.pairs[begin].lean_a, lean_b = posed.pairs[begin].lean_b;
+        const Any_posed_pair& first = posed.pairs[begin];
         std::size_t end = begin + 1;
-        while (end < posed.pairs.size() && posed.pairs[end].lean_a == lean_a && posed.pairs[end].lean_b == lean_b) ++end;
-        if (!lean_a && !lean_b) detail::run_kinds<Object, Object>(posed, begin, end, first_index, run, out);
-        else if (!lean_a) detail::run_kinds<Object, Lean_object>(posed, begin, end, first_index, run, out);
-        else if (!lean_b) detail::run_kinds<Lean_object, Object>(posed, begin, end, first_index, run, out);
-        else detail::run_kinds<Lean_object, Lean_object>(posed, begin, end, first_index, run, out);
+        while (end < posed.pairs.size() && posed.pairs[end].a.lean == first.a.lean && posed.pairs[end].b.lean == first.b.lean)
+            ++end;
+        visit_objects(first.a, first.b, [&](const auto& a, const auto& b) {
+            using A = std::remove_cvref_t<decltype(a)>;
+            using B = std::remove_cvref_t<decltype(b)>;
+            detail::run_kinds<A, B>(posed, begin, end, first_index, run, out);
+        });
         begin = end;
     }
     return out;

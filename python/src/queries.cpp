@@ -483,16 +483,10 @@ Posed_pairs posed_pairs(const py::iterable& pairs)
         const py::sequence pair = py::reinterpret_borrow<py::sequence>(item);
         const py::object a = pair[0];
         const py::object b = pair[2];
-        const auto kind = [&](const py::object& o, bool& lean) -> const void* {
-            if (py::isinstance<Object>(o)) return &o.cast<const Object&>();
-            lean = true;
-            if (py::isinstance<Lean_object>(o)) return &o.cast<const Lean_object&>();
-            throw py::type_error(where + ": items 0 and 2 must be pccd.Object or pccd.LeanObject instances, not " +
-                                 std::string(py::str(py::type::handle_of(o).attr("__name__"))));
-        };
+        const char* requirement = "items 0 and 2 must be pccd.Object or pccd.LeanObject instances";
         Any_posed_pair posed;
-        posed.a = kind(a, posed.lean_a);
-        posed.b = kind(b, posed.lean_b);
+        posed.a = any_object(a, where, requirement);
+        posed.b = any_object(b, where, requirement);
         try {
             posed.pose_a = pose_argument(pair[1], "pose_a");
             posed.pose_b = pose_argument(pair[3], "pose_b");
