@@ -1,7 +1,8 @@
 // A large scan as the lean object (doc/manual/surface.md "The lean object: the Euclidean kernel for
 // large scans"): a scan of two parallel walls 1.6 apart (200,000 points) becomes a
 // Euclidean_point_cloud_object -- a fifth of a Point_cloud_object's memory -- which is saved to a
-// file and loaded back (the preprocessing is paid once); a small part, a ball of radius 0.5 (6,000
+// file and loaded back (the preprocessing is paid once; object_file_info tells which loader a file
+// needs, without reading it); a small part, a ball of radius 0.5 (6,000
 // points), stays a Point_cloud_object (the geodesic kernel, better on small and sharp parts). The
 // queries take the two kinds together: the clearance of the ball moved towards one wall, printed
 // beside the true one, 0.8 - 0.5 - |y|.
@@ -9,6 +10,7 @@
 #include <PCCD/Point_cloud_object.h>
 #include <PCCD/Proximity/clearance.h>
 #include <PCCD/Random.h>
+#include <PCCD/object_file_info.h>
 #include <PCCD/testing/Parallel_sheets_shape.h>
 #include <PCCD/testing/Sphere_shape.h>
 
@@ -37,6 +39,11 @@ int main()
                         built.timings().normals + built.timings().graph + built.timings().hierarchy);
         built.save(file);
     }
+    // What the file holds, from its first bytes: which loader reads it, and how many points it has.
+    const PCCD::Object_file_info info = PCCD::object_file_info(file);
+    std::printf("%s: a %s object file of %llu points (format version %u)\n", file.c_str(), PCCD::to_string(info.kind),
+                static_cast<unsigned long long>(info.points), unsigned(info.version));
+    if (info.kind != PCCD::Object_file_kind::euclidean) return 1;
     const auto scan = PCCD::Euclidean_point_cloud_object<>::load(file);
     std::filesystem::remove(file);
     const PCCD::Point_cloud_object<> part(ball.sample(6000, engine).points);

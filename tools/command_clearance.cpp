@@ -191,7 +191,7 @@ template <class Object, class Scene>
 void run_clearance_with(const Clearance_cli_options& o, double margin, const PCCD::Clearance_options& options,
                         const std::vector<PCCD::Rigid_transform_3<double>>& poses, const Two_clouds& clouds)
 {
-    const Prepared_pair<Object, Scene> objects = prepare_pair<Object, Scene>(clouds, o.file_object, o.file_scene, o.object);
+    const Prepared_pair<Object, Scene> objects = prepare_pair<Object, Scene>(clouds, o.object);
     const Prepared_object<Object>& object = objects.a;
     const Prepared_object<Scene>& scene = objects.b;
     const bool same = objects.shared;
@@ -217,15 +217,11 @@ void run_clearance_with(const Clearance_cli_options& o, double margin, const PCC
         std::cout << r.dump(2) << '\n';
         return;
     }
-    const auto object_line = []<class T>(const char* name, const std::string& file, const Prepared_object<T>& prepared) {
-        std::printf("%s: %s, %zu points, %s kernel, r(P) %.5g, preprocessed in %.1f ms\n", name, file.c_str(),
-                    prepared.object.size(), kernel_name<T>(), prepared.object.sampling_radius(), prepared.preprocess_ms);
-    };
-    object_line("object", o.file_object, object);
+    print_object_line("object", object_json(o.file_object, object));
     if (same)
         std::printf("scene: the same object\n");
     else
-        object_line("scene", o.file_scene, scene);
+        print_object_line("scene", object_json(o.file_scene, scene));
     std::printf("path: %s, %zu poses, margin %s, max_distance %s, seed %llu\n", o.path.c_str(), poses.size(),
                 number(margin).c_str(), options.max_distance ? number(*options.max_distance).c_str() : "none",
                 static_cast<unsigned long long>(o.seed));

@@ -56,17 +56,11 @@ struct Collide_options {
 
 void print_summary(const nlohmann::ordered_json& r)
 {
-    const auto object_line = [](const char* name, const nlohmann::ordered_json& o) {
-        std::printf("%s: %s, %zu points, %s kernel, r(P) %.5g, preprocessed in %.1f ms\n", name,
-                    o["file"].get<std::string>().c_str(), o["points"].get<std::size_t>(),
-                    o["kernel"].get<std::string>().c_str(), o["sampling_radius"].get<double>(),
-                    o["preprocess_ms"].get<double>());
-    };
-    object_line("A", r["a"]);
+    print_object_line("A", r["a"]);
     if (r["same_object"].get<bool>())
         std::printf("B: the same object as A\n");
     else
-        object_line("B", r["b"]);
+        print_object_line("B", r["b"]);
     std::printf("method %s, mode %s, seed %llu%s\n", r["method"].get<std::string>().c_str(),
                 r["mode"].get<std::string>().c_str(), static_cast<unsigned long long>(r["seed"].get<std::uint64_t>()),
                 r["normalize"].get<bool>() ? ", normalized into [-1,1]^3" : "");
@@ -91,7 +85,7 @@ void run_collide_with(const Collide_options& o, const PCCD::Intersection_options
 {
     const bool first_hit = o.mode == "first";
     const auto& [cases, pose_a, pose_b] = poses;
-    const Prepared_pair<A, B> objects = prepare_pair<A, B>(clouds, o.file_a, o.file_b, o.object);
+    const Prepared_pair<A, B> objects = prepare_pair<A, B>(clouds, o.object);
     const Prepared_object<A>& a = objects.a;
     const Prepared_object<B>& b = objects.b;
     const bool same = objects.shared;

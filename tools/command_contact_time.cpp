@@ -4,7 +4,8 @@
 //   [--png F [--png-time T]] [--cases FILE]:
 // the first time in [0, 1] at which two point clouds moving rigidly come into contact
 // (PCCD::time_of_contact), with its bracket, the contact point and normal, the counters and the
-// wall time; --png draws the objects at the contact time. Each object is preprocessed once; with
+// wall time; --png draws the objects at the contact time. Each object is preprocessed once (point
+// files make geodesic objects) or loaded from a prepared object file (as its kind); with
 // --cases every row of a CSV file of four poses is answered with the same preprocessed objects.
 // Implements doc/manual/continuous.md, "CLI and Python".
 #include "commands.h"
@@ -124,8 +125,8 @@ Motion make_motion(const std::string& kind, const PCCD::Rigid_transform_3<double
 }
 
 /// PCCD::time_of_contact with the two motions (both linear or both screw).
-PCCD::Contact_time_result contact_time(const PCCD::Point_cloud_object<>& a, const Motion& ma,
-                                       const PCCD::Point_cloud_object<>& b, const Motion& mb,
+template <class A, class B>
+PCCD::Contact_time_result contact_time(const A& a, const Motion& ma, const B& b, const Motion& mb,
                                        const PCCD::Contact_time_options& options)
 {
     if (ma.linear) return PCCD::time_of_contact(a, *ma.linear, b, *mb.linear, options);
@@ -185,40 +186,24 @@ pccd_render::Marker_layer path_layer(const Motion& m, const Eigen::Vector3d& c, 
     return layer;
 }
 
-void run_contact_time(const Contact_time_cli_options& o)
-{
-    // Everything is read and checked before the (slow) preprocessing.
-    if (o.motion != "linear" && o.motion != "screw")
-        throw PCCD::Invalid_input("--motion must be linear or screw, not \"" + o.motion + "\"");
-    if (o.motion == "screw" && (!o.centre_a.empty() || !o.centre_b.empty()))
-        throw PCCD::Invalid_input(std::string(o.centre_a.empty() ? "--centre-b" : "--centre-a") +
-                                  " applies to --motion linear only (a screw motion turns about its own axis)");
-    const PCCD::Contact_time_options options = contact_time_options(o);
-    const Eigen::Vector3d centre_a = centre_option(o.centre_a, "--centre-a");
-    const Eigen::Vector3d centre_b = centre_option(o.centre_b, "--centre-b");
-    std::optional<double> png_time;
-    if (!o.png_time.empty()) {
-        png_time = parse_finite_number(o.png_time, "--png-time");
-        if (!(*png_time >= 0.0 && *png_time <= 1.0))
-            throw PCCD::Invalid_input("--png-time " + o.png_time + ": the time must be in [0, 1]");
-    }
-    std::optional<std::vector<Motion_case>> cases;
+/// The poses of a motion given by options: A at t = 0 and 1, B at t = 0 and 1.
+struct Option_poses {
     PCCD::Rigid_transform_3<double> from_a, to_a, from_b, to_b;
-    if (!o.cases.empty())
-        cases = read_motion_cases(o.cases, o.orthonormalize);
-    else {
-        from_a = option_transform(o.from_a, "--from-a", o.orthonormalize);
-        to_a = option_transform(o.to_a, "--to-a", o.orthonormalize);
-        from_b = option_transform(o.from_b, "--from-b", o.orthonormalize);
-        to_b = option_transform(o.to_b, "--to-b", o.orthonormalize);
-    }
-    const bool same = same_file(o.file_a, o.file_b);
-    const Object_points points_a = read_object_points(o.file_a, o.normalize);
-    const std::optional<Object_points> points_b =
-        same ? std::nullopt : std::optional<Object_points>(read_object_points(o.file_b, o.normalize));
-    const Prepared_object a = prepare_object(points_a, o.file_a, o.object);
-    const Prepared_object b = same ? a : prepare_object(*points_b, o.file_b, o.object);
-    const double preprocess_ms = a.preprocess_ms + (same ? 0.0 : b.preprocess_ms);
+};
+
+/// The query (or the cases) on A and B preprocessed (or loaded) into an `A` and a `B`, and its output.
+template <class A, class B>
+void run_contact_time_with(const Contact_time_cli_options& o, const PCCD::Contact_time_options& options,
+                           const Eigen::Vector3d& centre_a, const Eigen::Vector3d& centre_b,
+                           const std::optional<double>& png_time, const std::optional<std::vector<Motion_case>>& cases,
+                           const Option_poses& poses, const Two_clouds& clouds)
+{
+    const auto& [from_a, to_a, from_b, to_b] = poses;
+    const Prepared_pair<A, B> objects = prepare_pair<A, B>(clouds, o.object);
+    const Prepared_object<A>& a = objects.a;
+    const Prepared_object<B>& b = objects.b;
+    const bool same = objects.shared;
+    const double preprocess_ms = objects.preprocess_ms();
 
     if (cases) {
         std::printf("case,status,t,t_low,t_high,query_us\n");
@@ -273,7 +258,7 @@ void run_contact_time(const Contact_time_cli_options& o)
         scene.clouds.push_back(cloud_layer(b.object, mb.pose(t), pccd_render::colour_b));
         const double radius = 0.5 * std::min(scene.clouds[0].splat_radius, scene.clouds[1].splat_radius);
         // The paths of the box centres over [0, 1], darker than the clouds.
-        const auto centre = [](const PCCD::Point_cloud_object<>& object) {
+        const auto centre = [](const auto& object) {
             return Eigen::Vector3d(object.hierarchy().root().box.center());
         };
         scene.markers.push_back(path_layer(ma, centre(a.object), 0.5 * radius, {30, 70, 140}));
@@ -293,16 +278,11 @@ void run_contact_time(const Contact_time_cli_options& o)
         std::cout << r.dump(2) << '\n';
         return;
     }
-    const auto object_line = [](const char* name, const nlohmann::ordered_json& j) {
-        std::printf("%s: %s, %zu points, r(P) %.5g, preprocessed in %.1f ms\n", name,
-                    j["file"].get<std::string>().c_str(), j["points"].get<std::size_t>(),
-                    j["sampling_radius"].get<double>(), j["preprocess_ms"].get<double>());
-    };
-    object_line("A", r["a"]);
+    print_object_line("A", r["a"]);
     if (same)
         std::printf("B: the same object as A\n");
     else
-        object_line("B", r["b"]);
+        print_object_line("B", r["b"]);
     std::printf("motion %s, tolerance %s, seed %llu%s\n", o.motion.c_str(), number_text(options.tolerance).c_str(),
                 static_cast<unsigned long long>(o.seed), o.normalize ? ", normalized into [-1,1]^3" : "");
     std::printf("status: %s\n", PCCD::to_string(result.status));
@@ -316,6 +296,45 @@ void run_contact_time(const Contact_time_cli_options& o)
         std::printf("wrote %s: A blue, B gold at t = %s, their paths darker%s\n", r["png"].get<std::string>().c_str(),
                     number_text(r["png_time"].get<double>()).c_str(),
                     drew_point ? ", the contact point red" : "");
+}
+
+void run_contact_time(const Contact_time_cli_options& o)
+{
+    // Everything is read and checked before the (slow) preprocessing.
+    if (o.motion != "linear" && o.motion != "screw")
+        throw PCCD::Invalid_input("--motion must be linear or screw, not \"" + o.motion + "\"");
+    if (o.motion == "screw" && (!o.centre_a.empty() || !o.centre_b.empty()))
+        throw PCCD::Invalid_input(std::string(o.centre_a.empty() ? "--centre-b" : "--centre-a") +
+                                  " applies to --motion linear only (a screw motion turns about its own axis)");
+    const PCCD::Contact_time_options options = contact_time_options(o);
+    const Eigen::Vector3d centre_a = centre_option(o.centre_a, "--centre-a");
+    const Eigen::Vector3d centre_b = centre_option(o.centre_b, "--centre-b");
+    std::optional<double> png_time;
+    if (!o.png_time.empty()) {
+        png_time = parse_finite_number(o.png_time, "--png-time");
+        if (!(*png_time >= 0.0 && *png_time <= 1.0))
+            throw PCCD::Invalid_input("--png-time " + o.png_time + ": the time must be in [0, 1]");
+    }
+    std::optional<std::vector<Motion_case>> cases;
+    PCCD::Rigid_transform_3<double> from_a, to_a, from_b, to_b;
+    if (!o.cases.empty())
+        cases = read_motion_cases(o.cases, o.orthonormalize);
+    else {
+        from_a = option_transform(o.from_a, "--from-a", o.orthonormalize);
+        to_a = option_transform(o.to_a, "--to-a", o.orthonormalize);
+        from_b = option_transform(o.from_b, "--from-b", o.orthonormalize);
+        to_b = option_transform(o.to_b, "--to-b", o.orthonormalize);
+    }
+    // Point files make geodesic objects; a prepared object file (pccd prepare) is loaded as its kind.
+    const Two_clouds clouds = read_two_clouds(o.file_a, o.file_b, o.normalize);
+    const auto kernel_of = [](const Object_input& input) {
+        return std::string(input.is_prepared() ? PCCD::to_string(input.prepared) : "geodesic");
+    };
+    with_kernels("", kernel_of(clouds.a), kernel_of(clouds.input_b()), clouds,
+                 [&]<class A, class B>(std::type_identity<A>, std::type_identity<B>) {
+                     run_contact_time_with<A, B>(o, options, centre_a, centre_b, png_time, cases, {from_a, to_a, from_b, to_b},
+                                                 clouds);
+                 });
 }
 
 } // namespace

@@ -198,17 +198,11 @@ std::string text_value(const nlohmann::ordered_json& v)
 void print_summary(const nlohmann::ordered_json& r, const nlohmann::ordered_json& result,
                    const std::vector<std::pair<std::string, double>>& raw_numbers)
 {
-    const auto object_line = [](const char* name, const nlohmann::ordered_json& o) {
-        std::printf("%s: %s, %zu points, %s kernel, r(P) %.5g, preprocessed in %.1f ms\n", name,
-                    o["file"].get<std::string>().c_str(), o["points"].get<std::size_t>(),
-                    o["kernel"].get<std::string>().c_str(), o["sampling_radius"].get<double>(),
-                    o["preprocess_ms"].get<double>());
-    };
-    object_line("A", r["a"]);
+    print_object_line("A", r["a"]);
     if (r["same_object"].get<bool>())
         std::printf("B: the same object as A\n");
     else
-        object_line("B", r["b"]);
+        print_object_line("B", r["b"]);
     std::printf("query %s, seed %llu%s\n", r["query"].get<std::string>().c_str(),
                 static_cast<unsigned long long>(r["seed"].get<std::uint64_t>()),
                 r["normalize"].get<bool>() ? ", normalized into [-1,1]^3" : "");
@@ -260,7 +254,7 @@ void run_distance_with(const Distance_cli_options& o, const PCCD::Distance_optio
                        const std::optional<double>& margin, const Query_poses& poses, const Two_clouds& clouds)
 {
     const auto& [cases, pose_a, pose_b] = poses;
-    const Prepared_pair<A, B> objects = prepare_pair<A, B>(clouds, o.file_a, o.file_b, o.object);
+    const Prepared_pair<A, B> objects = prepare_pair<A, B>(clouds, o.object);
     const Prepared_object<A>& a = objects.a;
     const Prepared_object<B>& b = objects.b;
     const bool same = objects.shared;

@@ -1,14 +1,17 @@
 // pccd info FILE [--json]: what a point file holds and the figures of its cloud (points, bounding
 // box, mean spacing, and the preprocessed object with the library's defaults: graph, CPSP map,
 // bandwidth, normals and the time of each stage). Later stages add their figures to the same JSON
-// object.
+// object. Given a prepared object file (pccd prepare, an object's save()), its kind and format
+// version and the loaded object's figures instead.
 #include "commands.h"
 #include "progress.h"
 
+#include <PCCD/Euclidean_point_cloud_object.h>
 #include <PCCD/Hierarchy/Sphere_covering.h>
 #include <PCCD/IO/read_points.h>
 #include <PCCD/Point_cloud.h>
 #include <PCCD/Point_cloud_object.h>
+#include <PCCD/object_file_info.h>
 #include <PCCD/Proximity_graph/graph_components.h>
 
 #include <PCCD/testing/statistics.h>
@@ -18,6 +21,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -34,8 +38,46 @@ nlohmann::json vector_json(const Eigen::Vector3d& v) { return nlohmann::json::ar
 
 double median_of(const Eigen::VectorXd& v) { return PCCD::testing::upper_median({v.data(), v.data() + v.size()}); }
 
+/// A prepared object file: its kind and format version, and the loaded object's figures.
+template <class Object>
+nlohmann::json describe_prepared(const std::string& path, const PCCD::Object_file_info& file)
+{
+    nlohmann::json out;
+    out["file"] = path;
+    out["prepared"] = {{"kernel", PCCD::to_string(file.kind)},
+                       {"format_version", file.version},
+                       {"bytes", std::filesystem::file_size(path)}};
+    const auto start = Clock::now();
+    const Object object = Object::load(path);
+    out["timings_ms"]["load"] = ms_since(start);
+    out["points"] = object.size();
+    const PCCD::Point_cloud<>& cloud = object.cloud();
+    out["bbox"] = {{"min", vector_json(cloud.bbox().min())}, {"max", vector_json(cloud.bbox().max())}};
+    out["mean_spacing"] = cloud.mean_spacing();
+    out["sampling_radius"] = object.sampling_radius();
+    out["bandwidth"] = object.bandwidth();
+    out["theta_eps"] = object.weight().threshold();
+    out["surface_fit"] = PCCD::to_string(object.surface().fit());
+    out["noise"] = {{"sigma", object.noise_estimate()}};
+    out["outliers"] = {{"count", object.scan().outliers.size()}, {"input_points", object.scan().input_points}};
+    const PCCD::Point_cloud_hierarchy& h = object.hierarchy();
+    out["hierarchy"] = {{"depth", h.height()},
+                        {"nodes", h.nodes().size()},
+                        {"leaf_size", h.leaf_size()},
+                        {"volume", PCCD::to_string(h.volume())}};
+    return out;
+}
+
 nlohmann::json describe_file(const std::string& path)
 {
+    std::error_code error;
+    if (std::filesystem::is_regular_file(path, error)) {
+        const PCCD::Object_file_info file = PCCD::object_file_info(path);
+        if (file.kind == PCCD::Object_file_kind::geodesic)
+            return describe_prepared<PCCD::Point_cloud_object<>>(path, file);
+        if (file.kind == PCCD::Object_file_kind::euclidean)
+            return describe_prepared<PCCD::Euclidean_point_cloud_object<>>(path, file);
+    }
     nlohmann::json out;
     out["file"] = path;
     auto start = Clock::now();
@@ -124,6 +166,25 @@ nlohmann::json describe_file(const std::string& path)
 void print_text(const nlohmann::json& info)
 {
     std::cout << std::setprecision(6);
+    if (info.contains("prepared")) {
+        const nlohmann::json& p = info["prepared"];
+        std::cout << "file          " << info["file"].get<std::string>() << " (a prepared "
+                  << p["kernel"].get<std::string>() << " object file, format version " << p["format_version"] << ", "
+                  << p["bytes"] << " bytes)\n"
+                  << "points        " << info["points"] << '\n'
+                  << "bbox min      " << info["bbox"]["min"].dump() << '\n'
+                  << "bbox max      " << info["bbox"]["max"].dump() << '\n'
+                  << "mean spacing  " << info["mean_spacing"] << '\n'
+                  << "sampling r    " << info["sampling_radius"] << '\n'
+                  << "bandwidth     " << info["bandwidth"] << " (theta_eps " << info["theta_eps"] << ")\n"
+                  << "surface fit   " << info["surface_fit"].get<std::string>() << '\n'
+                  << "noise         " << info["noise"]["sigma"] << '\n'
+                  << "outliers      " << info["outliers"]["count"] << " of " << info["outliers"]["input_points"]
+                  << " points left out\n"
+                  << "hierarchy     " << info["hierarchy"].dump() << '\n'
+                  << "time load     " << info["timings_ms"]["load"].get<double>() << " ms\n";
+        return;
+    }
     std::cout << "file          " << info["file"].get<std::string>() << '\n'
               << "points        " << info["points"] << (info["normals"]["from_file"].get<bool>() ? " (with normals)" : "")
               << '\n'
@@ -151,10 +212,12 @@ void print_text(const nlohmann::json& info)
 
 void register_info(CLI::App& app)
 {
-    auto* cmd = app.add_subcommand("info", "Describe a point file (PLY, OFF, XYZ): points, bounding box, mean spacing");
+    auto* cmd = app.add_subcommand("info", "Describe a point file (PLY, OFF, XYZ): points, bounding box, mean spacing; or a "
+                                           "prepared object file (pccd prepare): its kind and the loaded object's figures");
     auto file = std::make_shared<std::string>();
     auto json = std::make_shared<bool>(false);
-    cmd->add_option("FILE", *file, "Point cloud or mesh file (.ply, .off, .xyz, .pwn)")->required();
+    cmd->add_option("FILE", *file, "Point cloud or mesh file (.ply, .off, .xyz, .pwn), or a prepared object file")
+        ->required();
     cmd->add_flag("--json", *json, "Print one JSON object instead of text");
     cmd->callback([file, json] {
         const nlohmann::json info = describe_file(*file);

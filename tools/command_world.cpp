@@ -166,16 +166,28 @@ void run_world(const World_command_options& o)
     };
     for (const Scene_row& row : rows) add_file(row.file);
     for (const auto& [file, count] : specs) add_file(file);
-    std::vector<Object_points> points; // every file read before any is preprocessed
-    for (const std::string& file : files) points.push_back(read_object_points(file, o.normalize));
-    // The objects, the world and the output, for the object type --kernel chooses (by the largest file).
+    std::vector<Object_input> inputs; // every file read before any is preprocessed
+    for (const std::string& file : files) inputs.push_back(read_object_input(file, o.normalize));
+    // The objects, the world and the output, for the object type --kernel chooses (by the largest
+    // file), or the prepared object files' one kind.
     std::size_t largest = 0;
-    for (const Object_points& p : points) largest = std::max(largest, p.points.size());
+    for (const Object_input& input : inputs) largest = std::max(largest, input.size());
+    std::string kernel = o.kernel;
+    const Object_input* first_prepared = nullptr;
+    for (const Object_input& input : inputs) {
+        if (!input.is_prepared()) continue;
+        if (first_prepared && input.prepared != first_prepared->prepared)
+            throw PCCD::Invalid_input("a world holds objects of one kernel: " + first_prepared->file + " is a prepared " +
+                                      PCCD::to_string(first_prepared->prepared) + " object file, " + input.file +
+                                      " a " + PCCD::to_string(input.prepared) + " one");
+        kernel = kernel_of_input(o.kernel, input.prepared, input.file);
+        first_prepared = &input;
+    }
     const auto run = [&]<class Object>(std::type_identity<Object>) {
         std::vector<std::shared_ptr<const Object>> objects;
         nlohmann::ordered_json object_entries = nlohmann::ordered_json::array(); // the JSON's "objects"
         for (std::size_t i = 0; i < files.size(); ++i) {
-            Prepared_object<Object> prepared = prepare_object<Object>(points[i], files[i], o.object);
+            Prepared_object<Object> prepared = make_object<Object>(inputs[i], o.object);
             object_entries.push_back(object_json(files[i], prepared));
             objects.push_back(std::make_shared<const Object>(std::move(prepared.object)));
         }
@@ -297,7 +309,7 @@ void run_world(const World_command_options& o)
             std::printf("wrote %s: touching instances red, the others grey, intersection points dark\n",
                         r["png"].get<std::string>().c_str());
     };
-    with_kernel(o.kernel, largest, run);
+    with_kernel(kernel, largest, run);
 }
 
 } // namespace
@@ -330,7 +342,7 @@ void register_world(CLI::App& app)
     cmd->add_option("--kernel", o->kernel,
                     "The objects' surface kernel, one for all: geodesic (Point_cloud_object), euclidean (the lean "
                     "Euclidean_point_cloud_object, about a fifth of the memory) or auto (default: euclidean when a "
-                    "file has 10^6 points or more)")
+                    "file has 10^6 points or more; prepared object files (pccd prepare) fix it)")
         ->check(CLI::IsMember(kernel_names()));
     cmd->add_flag("--json", o->json, "Print the result as JSON");
     cmd->add_option("--png", o->png, "Draw the scene into this PNG file: touching instances red, the others grey");

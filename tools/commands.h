@@ -15,6 +15,7 @@ void register_distance(CLI::App& app);       // pccd distance A B [--transform-a
 void register_clearance(CLI::App& app);      // pccd clearance OBJECT SCENE --path POSES.csv --margin M [--max-distance CAP] [--json] [--png F]
 void register_contact_time(CLI::App& app);   // pccd contact-time A B [--from-a ...] [--to-a ...] [--motion linear|screw] [--cases FILE]
 void register_render(CLI::App& app);         // pccd render A [B] [--transform-a ...] [--points P] [--out F.png]
+void register_prepare(CLI::App& app);         // pccd prepare POINTS OUT [--kernel K] [--normalize] [--json]
 void register_world(CLI::App& app);          // pccd world SCENE.csv | --generate FILE:COUNT [--json] [--png F.png]
 void register_bench(CLI::App& app);          // pccd bench FILE [--method isearch|rst] [--distances a:b:s] [--csv OUT]
 

@@ -1,6 +1,6 @@
 // tools/intersection_support.h -- what `pccd collide`, `pccd distance` and `pccd bench` share:
 // reading an object from a file (optionally normalized into [-1, 1]^3, doc/manual/sampling.md) and
-// preprocessing it, choosing the leaf intersector by name (doc/manual/intersection.md, the leaf
+// preprocessing it, or loading it from a prepared object file (`pccd prepare`), choosing the leaf intersector by name (doc/manual/intersection.md, the leaf
 // intersector policies), running one timed query, and the query's counters as JSON and CSV. It
 // implements the command line of doc/manual/cli_collide.md.
 #pragma once
@@ -10,6 +10,7 @@
 #include <PCCD/Intersection/do_intersect.h>
 #include <PCCD/Euclidean_point_cloud_object.h>
 #include <PCCD/Point_cloud_object.h>
+#include <PCCD/object_file_info.h>
 #include <PCCD/Similarity_3.h>
 #include <PCCD/sharp_feature_options.h>
 
@@ -108,11 +109,12 @@ inline Object_points read_object_points(const std::string& path, bool normalize)
 }
 
 /// A preprocessed object (Point_cloud_object, or the lean Euclidean_point_cloud_object) and the wall
-/// time its preprocessing took.
+/// time its preprocessing took, or its loading when it came from a prepared object file (`loaded`).
 template <class Object = PCCD::Point_cloud_object<>>
 struct Prepared_object {
     Object object;
     double preprocess_ms;
+    bool loaded = false;
 };
 
 /// The name of an object's kernel in the outputs: "geodesic" or "euclidean".
@@ -133,7 +135,19 @@ nlohmann::ordered_json object_json(const std::string& file, const Prepared_objec
             {"surface_fit", PCCD::to_string(prepared.object.surface().fit())},
             {"leaf_size", prepared.object.hierarchy().leaf_size()},
             {"sampling_radius", prepared.object.sampling_radius()},
-            {"preprocess_ms", prepared.preprocess_ms}};
+            {"preprocess_ms", prepared.preprocess_ms},
+            {"prepared_file", prepared.loaded}};
+}
+
+/// One object's line of the commands' text summaries, from its object_json(): "A: file, N points,
+/// K kernel, r(P) x, preprocessed in T ms" (or "loaded from a prepared object file in T ms").
+inline void print_object_line(const char* name, const nlohmann::ordered_json& o)
+{
+    std::printf("%s: %s, %zu points, %s kernel, r(P) %.5g, %s in %.1f ms\n", name, o["file"].get<std::string>().c_str(),
+                o["points"].get<std::size_t>(), o["kernel"].get<std::string>().c_str(),
+                o["sampling_radius"].get<double>(),
+                o["prepared_file"].get<bool>() ? "loaded from a prepared object file" : "preprocessed",
+                o["preprocess_ms"].get<double>());
 }
 
 /// `--kernel`: which object the points make. auto: the lean object (Euclidean kernel) when the
@@ -147,20 +161,55 @@ inline bool use_lean_kernel(const std::string& kernel, std::size_t points)
     return points >= lean_from_points;
 }
 
-/// The two point files of a query command, each read once: `b` is empty when both name the same
-/// file (`same`), which the command then preprocesses once.
+/// One object argument of a command: the points of a point file, or a prepared object file
+/// (`pccd prepare`, or an object's save() in C++ or Python), which is loaded instead of preprocessed
+/// and whose kind fixes the object's kernel.
+struct Object_input {
+    std::string file;
+    PCCD::Object_file_kind prepared = PCCD::Object_file_kind::none;
+    std::uint64_t prepared_points = 0;
+    Object_points points; // empty for a prepared object file
+
+    bool is_prepared() const { return prepared != PCCD::Object_file_kind::none; }
+    /// The number of points (a prepared file's, from its opening).
+    std::size_t size() const { return is_prepared() ? std::size_t(prepared_points) : points.points.size(); }
+};
+
+/// Reads the object argument `path`: a prepared object file is only recognized here (by its
+/// magic), a point file is read (and normalized into [-1, 1]^3 when asked).
+/// \throws PCCD::Invalid_input when asked to normalize a prepared object file (its points are fixed:
+///         prepare it with --normalize); PCCD::File_error as PCCD::IO::read_points.
+inline Object_input read_object_input(const std::string& path, bool normalize)
+{
+    std::error_code error;
+    if (std::filesystem::is_regular_file(path, error)) {
+        const PCCD::Object_file_info info = PCCD::object_file_info(path);
+        if (info.kind != PCCD::Object_file_kind::none) {
+            if (normalize)
+                throw PCCD::Invalid_input(path + ": a prepared object file cannot be normalized (--normalize): its points "
+                                                 "are fixed; prepare it from its point file with --normalize");
+            return {path, info.kind, info.points, {}};
+        }
+    }
+    return {path, PCCD::Object_file_kind::none, 0, read_object_points(path, normalize)};
+}
+
+/// The two object files of a query command, each read once: `b` is empty when both name the same
+/// file (`same`), which the command then preprocesses (or loads) once.
 struct Two_clouds {
     bool same = false;
-    Object_points a;
-    std::optional<Object_points> b;
+    Object_input a;
+    std::optional<Object_input> b;
+
+    const Object_input& input_b() const { return b ? *b : a; }
 };
 
 inline Two_clouds read_two_clouds(const std::string& file_a, const std::string& file_b, bool normalize)
 {
     Two_clouds clouds;
     clouds.same = same_file(file_a, file_b);
-    clouds.a = read_object_points(file_a, normalize);
-    if (!clouds.same) clouds.b = read_object_points(file_b, normalize);
+    clouds.a = read_object_input(file_a, normalize);
+    if (!clouds.same) clouds.b = read_object_input(file_b, normalize);
     return clouds;
 }
 
@@ -176,7 +225,21 @@ void with_kernel(const std::string& kernel, std::size_t points, Run&& run)
         run(std::type_identity<PCCD::Point_cloud_object<>>{});
 }
 
-/// The two objects' kernels: each object's own option (`kernel_a`, `kernel_b`; empty: not given)
+/// The kernel of a prepared object file of kind `prepared` (none: a point file, `kernel` decides),
+/// checked against the kernel asked for it (`kernel`: auto agrees with either).
+/// \throws PCCD::Invalid_input, naming `file`, when `kernel` names the other kind.
+inline std::string kernel_of_input(const std::string& kernel, PCCD::Object_file_kind prepared, const std::string& file)
+{
+    if (prepared == PCCD::Object_file_kind::none) return kernel;
+    const std::string kind = PCCD::to_string(prepared);
+    if (kernel != "auto" && kernel != kind)
+        throw PCCD::Invalid_input(file + ": a prepared object file of the " + kind + " kernel, asked for as " + kernel +
+                                  ": prepare it again with --kernel " + kernel + ", or leave the kernel to the file");
+    return kind;
+}
+
+/// The two objects' kernels: a prepared object file's own (an explicit other kernel is refused,
+/// kernel_of_input), else each object's own option (`kernel_a`, `kernel_b`; empty: not given)
 /// or else `kernel`, with `auto` decided by that object's own number of points, so that a small
 /// part beside a large scan keeps the geodesic kernel, which rounds its edges less
 /// (doc/benchmarks.md, "From the command line"). Calls `run(std::type_identity<A>{},
@@ -185,11 +248,12 @@ template <class Run>
 void with_kernels(const std::string& kernel, const std::string& kernel_a, const std::string& kernel_b,
                   const Two_clouds& clouds, Run&& run)
 {
-    const std::size_t points_a = clouds.a.points.size();
-    const std::size_t points_b = clouds.b ? clouds.b->points.size() : points_a;
-    with_kernel(kernel_a.empty() ? kernel : kernel_a, points_a, [&]<class A>(std::type_identity<A> tag_a) {
-        with_kernel(kernel_b.empty() ? kernel : kernel_b, points_b,
-                    [&]<class B>(std::type_identity<B> tag_b) { run(tag_a, tag_b); });
+    const Object_input& a = clouds.a;
+    const Object_input& b = clouds.input_b();
+    const std::string chosen_a = kernel_of_input(kernel_a.empty() ? kernel : kernel_a, a.prepared, a.file);
+    const std::string chosen_b = kernel_of_input(kernel_b.empty() ? kernel : kernel_b, b.prepared, b.file);
+    with_kernel(chosen_a, a.size(), [&]<class A>(std::type_identity<A> tag_a) {
+        with_kernel(chosen_b, b.size(), [&]<class B>(std::type_identity<B> tag_b) { run(tag_a, tag_b); });
     });
 }
 
@@ -231,7 +295,9 @@ inline nlohmann::ordered_json vector_json(const Eigen::Vector3d& v)
 /// (`--volume`, on the commands that take it) and leaf size (`--leaf-size`), and the surface
 /// (`--surface default|sharp`: the library's defaults or PCCD::sharp_feature_options()).
 struct Object_settings {
-    std::string volume = "box_and_slab";
+    /// A name of volume_names(), or empty: the library's default (box_and_slab), and a prepared
+    /// object file's own.
+    std::string volume;
     /// A whole number >= 1, or "auto".
     std::string leaf_size = "auto";
     std::string surface = "default";
@@ -273,7 +339,7 @@ inline PCCD::Point_cloud_object_options object_options(const Object_settings& se
         options = PCCD::sharp_feature_options(options);
     else if (settings.surface != "default")
         throw PCCD::Invalid_input("--surface must be default or sharp, not \"" + settings.surface + "\"");
-    options.hierarchy.volume = volume_from_name(settings.volume);
+    if (!settings.volume.empty()) options.hierarchy.volume = volume_from_name(settings.volume);
     options.hierarchy.leaf_size = leaf_size_for(settings, points);
     return options;
 }
@@ -283,11 +349,12 @@ inline void add_object_settings(CLI::App* cmd, Object_settings& settings, bool w
 {
     if (with_volume)
         cmd->add_option("--volume", settings.volume,
-                        "Bounding volume of the hierarchies' node tests: box_and_slab (default), box or sphere")
+                        "Bounding volume of the hierarchies' node tests: box_and_slab (default; a prepared object "
+                        "file's own), box or sphere")
             ->check(CLI::IsMember(volume_names()));
     cmd->add_option("--leaf-size", settings.leaf_size,
                     "Largest number of points in a hierarchy leaf: a whole number >= 1, or auto (default: 8, and 10 "
-                    "for an object of 10^6 points or more)")
+                    "for an object of 10^6 points or more; a prepared object file's own)")
         ->check(CLI::Validator(
             [](std::string& text) {
                 return text == "auto" || parse_leaf_size(text)
@@ -319,6 +386,36 @@ Prepared_object<Object> prepare_object(const Object_points& input, const std::st
     return {std::move(object), ms_since(start)};
 }
 
+/// Loads the prepared object file `input.file` as an `Object` (its kind, kernel_of_input()). Its
+/// hierarchy is the one it stores unless --leaf-size or --volume asks for another (then built with
+/// those, leaf_size_for() the file's number of points); its surface is the one it was prepared
+/// with.
+/// \throws PCCD::Invalid_input when --surface sharp is asked of a file prepared with another fit;
+///         PCCD::File_error as the object's load().
+template <class Object>
+Prepared_object<Object> load_prepared_object(const Object_input& input, const Object_settings& settings)
+{
+    const Clock::time_point start = Clock::now();
+    const bool stored_hierarchy = settings.leaf_size == "auto" && settings.volume.empty();
+    Object object = stored_hierarchy ? Object::load(input.file)
+                                     : Object::load(input.file, object_options(settings, input.size()).hierarchy);
+    const double ms = ms_since(start);
+    if (settings.surface == "sharp" && object.surface().fit() != PCCD::sharp_feature_options().surface_fit)
+        throw PCCD::Invalid_input(input.file + ": --surface sharp asked of a prepared object file whose surface fit is " +
+                                  PCCD::to_string(object.surface().fit()) +
+                                  ": a prepared file keeps its surface; prepare it with --surface sharp");
+    return {std::move(object), ms, true};
+}
+
+/// An object from a command's argument: loaded when it is a prepared object file, preprocessed
+/// from its points otherwise (prepare_object()).
+template <class Object>
+Prepared_object<Object> make_object(const Object_input& input, const Object_settings& settings)
+{
+    if (input.is_prepared()) return load_prepared_object<Object>(input, settings);
+    return prepare_object<Object>(input.points, input.file, settings);
+}
+
 /// Two objects preprocessed for a query: `shared` when both name the same file and take the same
 /// kernel, which is then preprocessed once (b a copy of a, sharing its data).
 template <class A, class B>
@@ -331,20 +428,19 @@ struct Prepared_pair {
     double preprocess_ms() const { return a.preprocess_ms + (shared ? 0.0 : b.preprocess_ms); }
 };
 
-/// Preprocesses the two clouds into an A and a B (see Prepared_pair); the same file under two
+/// Preprocesses (or loads, make_object()) the two objects into an A and a B (see Prepared_pair); the same file under two
 /// kernels is preprocessed twice.
 template <class A, class B>
-Prepared_pair<A, B> prepare_pair(const Two_clouds& clouds, const std::string& file_a, const std::string& file_b,
-                                 const Object_settings& settings)
+Prepared_pair<A, B> prepare_pair(const Two_clouds& clouds, const Object_settings& settings)
 {
-    Prepared_object<A> a = prepare_object<A>(clouds.a, file_a, settings);
+    Prepared_object<A> a = make_object<A>(clouds.a, settings);
     if constexpr (std::is_same_v<A, B>) {
         if (clouds.same) {
             Prepared_object<B> b = a;
             return {std::move(a), std::move(b), true};
         }
     }
-    Prepared_object<B> b = prepare_object<B>(clouds.b ? *clouds.b : clouds.a, file_b, settings);
+    Prepared_object<B> b = make_object<B>(clouds.input_b(), settings);
     return {std::move(a), std::move(b), false};
 }
 

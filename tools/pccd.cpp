@@ -25,6 +25,7 @@ int main(int argc, char** argv)
     pccd_tool::register_contact_time(app);
     pccd_tool::register_bench(app);
     pccd_tool::register_render(app);
+    pccd_tool::register_prepare(app);
     pccd_tool::register_world(app);
     try {
         app.parse(argc, argv);

@@ -78,6 +78,7 @@
 #include <PCCD/Surface/surface_options.h>
 #include <PCCD/Surface/surface_domain.h>
 #include <PCCD/make_point_cloud_object.h>
+#include <PCCD/object_file_info.h>
 #include <PCCD/sharp_feature_options.h>
 
 // Hierarchy and intersection queries

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <PCCD/Point_cloud_object_class.h>
+#include <PCCD/object_file_info.h>
 
 #include <numeric>
 #include <vector>
@@ -12,11 +13,6 @@
 namespace PCCD {
 
 namespace internal {
-
-inline constexpr char object_magic[8] = {'P', 'C', 'C', 'D', 'O', 'B', 'J', '\0'};
-/// The magic of a lean object's file (Euclidean_point_cloud_object::save,
-/// PCCD/Euclidean_point_cloud_object_file.h).
-inline constexpr char lean_object_magic[8] = {'P', 'C', 'C', 'D', 'L', 'E', 'A', 'N'};
 
 /// A read-only stream buffer over bytes held elsewhere, without copying them (the geodesic section
 /// of a loaded object file, read in place).

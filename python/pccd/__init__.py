@@ -20,6 +20,9 @@ LeanObject
     The lean object for large scans (from about 10^6 points): the Euclidean kernel, about a fifth
     of an Object's memory; every query but World takes it, alone or beside an Object;
     ``LeanObject.save`` / ``LeanObject.load`` keep it in a file.
+load
+    An object file of either kind (``Object.save``, ``LeanObject.save``, ``pccd prepare``) as the
+    kind it holds.
 do_intersect
     Whether two posed objects intersect (stops at the first point found).
 intersection_points
@@ -92,6 +95,7 @@ from ._pccd import (
     do_intersect_many,
     intersection_points,
     intersection_points_many,
+    load,
     orthonormalize,
     pair_seed,
     read_points,
@@ -106,6 +110,7 @@ __all__ = [
     "__version__",
     "Object",
     "LeanObject",
+    "load",
     "Result",
     "do_intersect",
     "do_intersect_many",

@@ -95,6 +95,9 @@ class LeanObject(_PointCloudObject):
     @property
     def memory_bytes(self) -> int: ...
 
+def load(path: _Path, *, leaf_size: Optional[int] = None,
+         volume: Optional[Literal["box_and_slab", "box", "sphere"]] = None) -> _AnyObject: ...
+
 class Result:
     @property
     def intersects(self) -> bool: ...

@@ -1,6 +1,7 @@
 // python/src/object.cpp -- pccd.Object: a PCCD::Point_cloud_object<> built from an (N, 3) numpy
 // array read in place (PCCD copies the points into its own store, nothing else does), with its
-// preprocessing options as keyword arguments, save() / load(), and read-only properties; the
+// preprocessing options as keyword arguments, save() / load() (and pccd.load for a file of either
+// kind), and read-only properties; the
 // arrays it hands out are read-only views of the object's own data (doc/manual/python.md,
 // "Objects").
 #include "pccd_python.h"
@@ -9,6 +10,7 @@
 
 #include <PCCD/Error.h>
 #include <PCCD/Intersection/do_intersect_many.h>
+#include <PCCD/object_file_info.h>
 #include <PCCD/sharp_feature_options.h>
 
 #include <algorithm>
@@ -19,6 +21,7 @@
 #include <optional>
 #include <ranges>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -401,6 +404,69 @@ Examples
 >>> pccd.distance(part, pose, scan, None).distance
 )doc";
 
+/// The hierarchy a load asks for: none (the stored one) unless `leaf_size` or `volume` is given,
+/// then those with the defaults for the other.
+std::optional<PCCD::Point_cloud_hierarchy_options> loaded_hierarchy(std::optional<std::size_t> leaf_size,
+                                                                    const std::optional<std::string>& volume,
+                                                                    const std::string& where)
+{
+    std::optional<PCCD::Point_cloud_hierarchy_options> hierarchy;
+    if (leaf_size || volume) {
+        hierarchy.emplace();
+        if (leaf_size) hierarchy->leaf_size = *leaf_size;
+        if (volume) hierarchy->volume = volume_of(*volume, where);
+    }
+    return hierarchy;
+}
+
+/// pccd.load(path): the object a file of either kind holds, as its kind (PCCD::object_file_info).
+py::object load_any(const py::object& path, std::optional<std::size_t> leaf_size, const std::optional<std::string>& volume)
+{
+    const std::string file = path_argument(path, "load", "path");
+    const auto hierarchy = loaded_hierarchy(leaf_size, volume, "load()");
+    const auto load = [&]<class T>(std::type_identity<T>) {
+        std::optional<T> object;
+        {
+            py::gil_scoped_release release;
+            object.emplace(hierarchy ? T::load(file, *hierarchy) : T::load(file));
+        }
+        return py::cast(std::move(*object));
+    };
+    switch (PCCD::object_file_info(file).kind) {
+    case PCCD::Object_file_kind::geodesic: return load(std::type_identity<Object>{});
+    case PCCD::Object_file_kind::euclidean: return load(std::type_identity<Lean_object>{});
+    case PCCD::Object_file_kind::none: break;
+    }
+    throw PCCD::File_error(file, "not a PCCD object file (Object.save or LeanObject.save); a point file is read with "
+                                 "pccd.read_points and preprocessed by pccd.Object or pccd.LeanObject");
+}
+
+const char* any_load_doc = R"doc(Read an object file of either kind: an ``Object`` or a ``LeanObject``, as the file holds.
+
+The kind is read from the file's first bytes (its magic), not from its name: a file written by
+``Object.save`` loads as an ``Object``, one written by ``LeanObject.save`` (or by
+``pccd prepare``) as a ``LeanObject``.
+
+Parameters
+----------
+path : str or os.PathLike
+    The file to read.
+leaf_size : int, optional
+volume : str, optional
+    As for ``Object.load``: with neither given (default), the stored hierarchy.
+
+Returns
+-------
+Object or LeanObject
+    The object, answering every query exactly as the one that was saved.
+
+Raises
+------
+OSError
+    The file is missing, not a PCCD object file (a point file, say), of another format version,
+    truncated, corrupted (checksum) or inconsistent; the message names the file and the problem.
+)doc";
+
 /// save() and the static load() of pccd.Object and pccd.LeanObject (each reads its own kind's files).
 template <class T>
 void add_files(py::class_<T>& c, const std::string& name, const std::string& extra_contents)
@@ -435,12 +501,7 @@ void add_files(py::class_<T>& c, const std::string& name, const std::string& ext
             "load",
             [name](const py::object& path, std::optional<std::size_t> leaf_size, std::optional<std::string> volume) {
                 const std::string file = path_argument(path, (name + ".load").c_str(), "path");
-                std::optional<PCCD::Point_cloud_hierarchy_options> hierarchy;
-                if (leaf_size || volume) {
-                    hierarchy.emplace();
-                    if (leaf_size) hierarchy->leaf_size = *leaf_size;
-                    if (volume) hierarchy->volume = volume_of(*volume, name + ".load()");
-                }
+                const auto hierarchy = loaded_hierarchy(leaf_size, volume, name + ".load()");
                 py::gil_scoped_release release;
                 return hierarchy ? T::load(file, *hierarchy) : T::load(file);
             },
@@ -469,6 +530,8 @@ void add_object(py::module_& m)
     lean.def_property_readonly("memory_bytes", &Lean_object::memory_bytes,
                                "int: Bytes the object holds (points, kd-tree, input indices, normals, domain radii, "
                                "hierarchy).");
+    m.def("load", &load_any, py::arg("path"), py::kw_only(), py::arg("leaf_size") = py::none(),
+          py::arg("volume") = py::none(), any_load_doc);
 }
 
 } // namespace pccd_python

@@ -98,6 +98,15 @@ function(pccd_world_reference scene json)
   endif()
 endfunction()
 
+# expect_kernels(<A's> <B's>): the kernels of the objects a and b of the last JSON output.
+function(expect_kernels expected_a expected_b)
+  string(JSON kernel_a GET "${PCCD_STDOUT}" a kernel)
+  string(JSON kernel_b GET "${PCCD_STDOUT}" b kernel)
+  if(NOT kernel_a STREQUAL expected_a OR NOT kernel_b STREQUAL expected_b)
+    message(FATAL_ERROR "expected a ${expected_a} A and a ${expected_b} B, built ${kernel_a} and ${kernel_b}")
+  endif()
+endfunction()
+
 # pccd_json_number(<out var> <json> <key>): a top-level number of a JSON object.
 function(pccd_json_number out json key)
   string(JSON value ERROR_VARIABLE error GET "${json}" ${key})
@@ -227,13 +236,6 @@ elseif(CASE STREQUAL "kernel_option")
   endforeach()
   # --kernel-a / --kernel-b: one object of each kind. The mixed pair answers as both kinds do (the
   # distance of surfaces 1 apart, the verdicts); the same file under two kernels is built twice.
-  function(expect_kernels expected_a expected_b)
-    string(JSON kernel_a GET "${PCCD_STDOUT}" a kernel)
-    string(JSON kernel_b GET "${PCCD_STDOUT}" b kernel)
-    if(NOT kernel_a STREQUAL expected_a OR NOT kernel_b STREQUAL expected_b)
-      message(FATAL_ERROR "expected a ${expected_a} A and a ${expected_b} B, built ${kernel_a} and ${kernel_b}")
-    endif()
-  endfunction()
   pccd_run(OK ARGS distance sphere.xyz torus.ply --transform-b ${shift_3} --kernel-a geodesic --kernel-b euclidean --json
            MATCH "\"status\": \"separate\"" "\"same_object\": false")
   expect_kernels(geodesic euclidean)
@@ -251,6 +253,65 @@ elseif(CASE STREQUAL "kernel_option")
                MATCH "${option}: lean not in \\{auto,geodesic,euclidean\\}")
     endforeach()
   endforeach()
+elseif(CASE STREQUAL "prepared_objects")
+  # pccd prepare writes an object file of each kind; every query command loads it instead of
+  # preprocessing, as that kind, and answers exactly as with the point file (the load is bit for
+  # bit); contradicting options are refused before any work.
+  file(REMOVE "${WORK}/sphere.pccdobj" "${WORK}/torus.pccdlean")
+  pccd_run(OK ARGS prepare sphere.xyz sphere.pccdobj --json
+           MATCH "\"kernel\": \"geodesic\"" "\"points\": 2000," "\"prepared_file\": false" "\"output\": \"sphere.pccdobj\"")
+  pccd_json_number(bytes "${PCCD_STDOUT}" bytes)
+  file(SIZE "${WORK}/sphere.pccdobj" size)
+  if(NOT bytes EQUAL size)
+    message(FATAL_ERROR "pccd prepare reported ${bytes} bytes, the file has ${size}")
+  endif()
+  pccd_run(OK ARGS prepare torus.ply torus.pccdlean --kernel euclidean
+           STDOUT_MATCH "object: torus.ply, 2000 points, euclidean kernel" "wrote torus.pccdlean: [0-9]+ bytes")
+  # pccd info tells the kind and gives the loaded object's figures.
+  pccd_run(OK ARGS info sphere.pccdobj
+           STDOUT_MATCH "sphere.pccdobj \\(a prepared geodesic object file, format version [0-9]+, ${size} bytes\\)"
+                        "points +2000" "time load")
+  pccd_run(OK ARGS info torus.pccdlean --json MATCH "\"kernel\": \"euclidean\"" "\"points\": 2000")
+  # The same answers from the files as from the points (the distance to the last digit).
+  pccd_run(OK ARGS distance sphere.xyz torus.ply --transform-b ${shift_3} --kernel-b euclidean --json
+           MATCH "\"status\": \"separate\"")
+  string(JSON from_points GET "${PCCD_STDOUT}" distance)
+  pccd_run(OK ARGS distance sphere.pccdobj torus.pccdlean --transform-b ${shift_3} --json
+           MATCH "\"status\": \"separate\"" "\"prepared_file\": true")
+  string(JSON from_files GET "${PCCD_STDOUT}" distance)
+  expect_kernels(geodesic euclidean)
+  if(NOT from_points STREQUAL from_files)
+    message(FATAL_ERROR "distance from the prepared files ${from_files}, from the points ${from_points}")
+  endif()
+  pccd_expect_between(${from_files} 0.97 1.03 "the distance of surfaces 1 apart, from prepared files")
+  pccd_run(OK ARGS collide sphere.pccdobj torus.pccdlean --transform-b ${shift_1}
+           STDOUT_MATCH "A: sphere.pccdobj, 2000 points, geodesic kernel, r\\(P\\) [0-9.]+, loaded from a prepared object file in"
+                        "B: torus.pccdlean, 2000 points, euclidean kernel" "answer: intersecting")
+  pccd_run(OK ARGS collide sphere.pccdobj sphere.pccdobj --transform-b ${shift_1} --json
+           MATCH "\"intersects\": true" "\"same_object\": true")
+  # --leaf-size rebuilds the loaded object's hierarchy; auto keeps the stored one.
+  pccd_run(OK ARGS collide sphere.pccdobj torus.ply --transform-b ${shift_3} --leaf-size 4 --json
+           MATCH "\"intersects\": false" "\"leaf_size\": 4,")
+  pccd_run(OK ARGS clearance sphere.pccdobj torus.pccdlean --path object_options_path.csv --margin 0.6 --json
+           MATCH "\"poses\": 2," "\"prepared_file\": true")
+  pccd_run(OK ARGS contact-time sphere.pccdobj torus.pccdlean --from-b 1,0,0,5,0,1,0,0,0,0,1,0
+                   --to-b 1,0,0,-5,0,1,0,0,0,0,1,0 --json
+           MATCH "\"status\": \"contact\"" "\"kernel\": \"euclidean\"" "\"prepared_file\": true")
+  # A world takes prepared files (their kind decides its one kernel) beside point files.
+  pccd_run(OK ARGS world --generate torus.pccdlean:4 --generate sphere.xyz:4 --scene-seed 3 --json
+           MATCH "\"kernel\": \"euclidean\"" "\"instances\": 8")
+  pccd_run(FAIL ARGS world --generate torus.pccdlean:2 --generate sphere.pccdobj:2
+           MATCH "a world holds objects of one kernel")
+  # Refused: another kernel, normalizing, another surface, preparing a prepared file or over the input.
+  pccd_run(FAIL ARGS collide sphere.pccdobj torus.ply --kernel euclidean
+           MATCH "sphere.pccdobj: a prepared object file of the geodesic kernel, asked for as euclidean")
+  pccd_run(FAIL ARGS distance sphere.xyz torus.pccdlean --kernel-b geodesic MATCH "asked for as geodesic")
+  pccd_run(FAIL ARGS collide sphere.pccdobj torus.ply --normalize MATCH "cannot be normalized")
+  pccd_run(FAIL ARGS collide sphere.pccdobj torus.ply --surface sharp MATCH "keeps its surface")
+  pccd_run(FAIL ARGS prepare sphere.pccdobj again.pccdobj MATCH "already a prepared object file")
+  pccd_run(FAIL ARGS prepare sphere.xyz sphere.xyz MATCH "is the input file")
+  execute_process(COMMAND head -c 1000 sphere.pccdobj OUTPUT_FILE cut.pccdobj WORKING_DIRECTORY ${WORK})
+  pccd_run(FAIL ARGS collide cut.pccdobj torus.ply MATCH "cut.pccdobj: .*(truncated|checksum)")
 elseif(CASE STREQUAL "collide_text")
   pccd_run(OK ARGS collide sphere.xyz torus.ply --transform-a ${identity} --transform-b ${shift_1}
            MATCH "A: sphere.xyz, 2000 points" "B: torus.ply, 2000 points" "answer: intersecting"

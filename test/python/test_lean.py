@@ -197,3 +197,28 @@ def test_a_saved_lean_object_loads_back_and_answers_as_it_did(balls, tmp_path):
         pccd.Object.load(path)
     with pytest.raises(OSError):
         pccd.LeanObject.load(tmp_path / "missing.pccdlean")
+
+
+def test_load_reads_either_kind_as_the_kind_it_holds(balls, tmp_path):
+    """pccd.load: the file's magic decides the class; the object answers as the saved one."""
+    geodesic, lean = balls
+    lean_path, geodesic_path = tmp_path / "ball.lean", tmp_path / "ball.obj"  # names that say nothing
+    lean.save(lean_path)
+    geodesic.save(str(geodesic_path))
+    loaded_lean, loaded_geodesic = pccd.load(lean_path), pccd.load(str(geodesic_path))
+    assert type(loaded_lean) is pccd.LeanObject and loaded_lean.kernel == "euclidean"
+    assert type(loaded_geodesic) is pccd.Object and loaded_geodesic.kernel == "geodesic"
+    assert np.array_equal(loaded_lean.points, lean.points)
+    assert np.array_equal(loaded_geodesic.points, geodesic.points)
+    assert (pccd.distance(loaded_geodesic, None, loaded_lean, at(1.2), seed=4).distance ==
+            pccd.distance(geodesic, None, lean, at(1.2), seed=4).distance)
+    assert pccd.load(lean_path, leaf_size=4).leaf_size == 4
+    # Not an object file, or not there: OSError naming the file.
+    points_path = tmp_path / "points.xyz"
+    pccd.write_points(points_path, lean.points[:50])
+    with pytest.raises(OSError, match="points.xyz: not a PCCD object file"):
+        pccd.load(points_path)
+    with pytest.raises(OSError, match="missing"):
+        pccd.load(tmp_path / "missing.lean")
+    with pytest.raises(ValueError, match="volume"):
+        pccd.load(lean_path, volume="cone")

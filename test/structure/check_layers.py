@@ -21,7 +21,7 @@ STAGES = [
     ("geodesics", ["Geodesic/"]),
     ("surface", ["Surface/"]),
     ("hierarchy", ["Hierarchy/"]),
-    ("object", ["Point_cloud_object*", "Euclidean_point_cloud_object*", "make_point_cloud_object.h",
+    ("object", ["Point_cloud_object*", "Euclidean_point_cloud_object*", "make_point_cloud_object.h", "object_file_info.h",
                 "sharp_feature_options.h"]),
     ("intersection", ["Intersection/"]),
     ("proximity", ["Proximity/"]),

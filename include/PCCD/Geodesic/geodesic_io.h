@@ -48,7 +48,6 @@ struct Geodesic_data {
 namespace internal {
 
 inline constexpr char geodesic_magic[8] = {'P', 'C', 'C', 'D', 'G', 'E', 'O', '\0'};
-inline constexpr std::uint32_t byte_order_mark = 0x01020304;
 
 inline std::uint64_t geodesic_file_size(std::uint64_t n, std::uint64_t e, std::uint64_t m)
 {

@@ -28,6 +28,10 @@
 
 namespace PCCD::internal {
 
+/// The byte-order mark of PCCD's binary files, stored after their magic: read back as another value,
+/// the file was written on a machine of another byte order.
+inline constexpr std::uint32_t byte_order_mark = 0x01020304;
+
 /// The values the binary files store: integers of 1, 2, 4 or 8 bytes (not bool), and IEEE-754
 /// float and double.
 template <class T>
