@@ -292,7 +292,8 @@ elseif(CASE STREQUAL "prepared_objects")
   # --leaf-size rebuilds the loaded object's hierarchy; auto keeps the stored one.
   pccd_run(OK ARGS collide sphere.pccdobj torus.ply --transform-b ${shift_3} --leaf-size 4 --json
            MATCH "\"intersects\": false" "\"leaf_size\": 4,")
-  pccd_run(OK ARGS clearance sphere.pccdobj torus.pccdlean --path object_options_path.csv --margin 0.6 --json
+  file(WRITE ${WORK}/prepared_path.csv "1,0,0,4,0,1,0,0,0,0,1,0\n1,0,0,2.25,0,1,0,0,0,0,1,0\n")
+  pccd_run(OK ARGS clearance sphere.pccdobj torus.pccdlean --path prepared_path.csv --margin 0.6 --json
            MATCH "\"poses\": 2," "\"prepared_file\": true")
   pccd_run(OK ARGS contact-time sphere.pccdobj torus.pccdlean --from-b 1,0,0,5,0,1,0,0,0,0,1,0
                    --to-b 1,0,0,-5,0,1,0,0,0,0,1,0 --json
