@@ -1,7 +1,7 @@
 // pccd prepare POINTS OUT [--kernel auto|geodesic|euclidean] [--normalize] [--leaf-size N|auto]
 //   [--volume V] [--surface default|sharp] [--json]: preprocesses a point file once and saves the
 // object (Point_cloud_object::save or Euclidean_point_cloud_object::save), so that collide,
-// distance, clearance, contact-time and world load it instead of preprocessing it again
+// distance, clearance, contact-time, world and render load it instead of preprocessing it again
 // (doc/manual/cli_collide.md, "Prepared objects").
 #include "commands.h"
 #include "intersection_support.h"
@@ -70,7 +70,7 @@ void register_prepare(CLI::App& app)
     auto o = std::make_shared<Prepare_options>();
     CLI::App* cmd = app.add_subcommand(
         "prepare", "Preprocess a point file once and save the object, which collide, distance, clearance, "
-                   "contact-time and world then load instead of preprocessing it again");
+                   "contact-time, world and render then load instead of preprocessing it again");
     cmd->add_option("points", o->input, "Point file (.ply, .off, .xyz)")->required();
     cmd->add_option("out", o->output,
                     "The object file to write (replaced if it exists); by habit .pccdobj for the geodesic kernel, "

@@ -3,7 +3,9 @@
 // a picture of one or two posed point clouds (shaded splats, A blue, B gold) and of points on their
 // intersection (red): read from a file (e.g. written by `pccd collide --mode all --out`) or computed
 // with --intersect (intersection_points, as `pccd collide --mode all`). The camera frames the whole
-// scene from the given direction, or (auto) from one that shows the intersection points. Implements doc/manual/cli_collide.md, "Pictures".
+// scene from the given direction, or (auto) from one that shows the intersection points. Point files
+// make geodesic objects; prepared object files (pccd prepare) are loaded as their kind. Implements
+// doc/manual/cli_collide.md, "Pictures".
 #include "commands.h"
 #include "intersection_support.h"
 #include "render_objects.h"
@@ -16,6 +18,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace pccd_tool {
@@ -34,23 +37,12 @@ struct Render_options {
     std::string view = "auto";
 };
 
-void run_render(const Render_options& o)
+/// The picture of A (and B when `b` is not null) and its summary line.
+template <class A, class B>
+void draw(const Render_options& o, const std::optional<pccd_render::View>& requested_view, int width, int height,
+          const PCCD::Rigid_transform_3<double>& pose_a, const PCCD::Rigid_transform_3<double>& pose_b,
+          const std::optional<PCCD::Point_data>& markers, const Prepared_object<A>& a, const Prepared_object<B>* b)
 {
-    // Everything that can be checked is checked before the (slow) preprocessing.
-    const std::optional<pccd_render::View> requested_view = view_option(o.view);
-    const auto [width, height] = pccd_render::parse_size(o.size);
-    const PCCD::Rigid_transform_3<double> pose_a = option_transform(o.transform_a, "--transform-a");
-    const PCCD::Rigid_transform_3<double> pose_b = option_transform(o.transform_b, "--transform-b");
-    if (o.file_b.empty() && !o.transform_b.empty())
-        throw PCCD::Invalid_input("--transform-b given without a second object B");
-    if (o.intersect && o.file_b.empty()) throw PCCD::Invalid_input("--intersect needs two objects, A and B");
-    std::optional<PCCD::Point_data> markers;
-    if (!o.points.empty()) markers = PCCD::IO::read_points(o.points);
-
-    const Prepared_object a = prepare_object(read_object_points(o.file_a, o.normalize), o.file_a);
-    std::optional<Prepared_object<>> b;
-    if (!o.file_b.empty()) b = prepare_object(read_object_points(o.file_b, o.normalize), o.file_b);
-
     pccd_render::Scene scene;
     scene.clouds.push_back(cloud_layer(a.object, pose_a, pccd_render::colour_a));
     if (b) scene.clouds.push_back(cloud_layer(b->object, pose_b, pccd_render::colour_b));
@@ -80,6 +72,39 @@ void run_render(const Render_options& o)
     std::printf("\n");
 }
 
+void run_render(const Render_options& o)
+{
+    // Everything that can be checked is checked before the (slow) preprocessing.
+    const std::optional<pccd_render::View> requested_view = view_option(o.view);
+    const auto [width, height] = pccd_render::parse_size(o.size);
+    const PCCD::Rigid_transform_3<double> pose_a = option_transform(o.transform_a, "--transform-a");
+    const PCCD::Rigid_transform_3<double> pose_b = option_transform(o.transform_b, "--transform-b");
+    if (o.file_b.empty() && !o.transform_b.empty())
+        throw PCCD::Invalid_input("--transform-b given without a second object B");
+    if (o.intersect && o.file_b.empty()) throw PCCD::Invalid_input("--intersect needs two objects, A and B");
+    std::optional<PCCD::Point_data> markers;
+    if (!o.points.empty()) markers = PCCD::IO::read_points(o.points);
+
+    // Point files make geodesic objects; a prepared object file (pccd prepare) is loaded as its kind.
+    const Object_input input_a = read_object_input(o.file_a, o.normalize);
+    std::optional<Object_input> input_b;
+    if (!o.file_b.empty()) input_b = read_object_input(o.file_b, o.normalize);
+    const auto kernel_of = [](const Object_input& input) {
+        return std::string(input.is_prepared() ? PCCD::to_string(input.prepared) : "geodesic");
+    };
+    with_kernel(kernel_of(input_a), input_a.size(), [&]<class A>(std::type_identity<A>) {
+        const Prepared_object<A> a = make_object<A>(input_a, {});
+        if (!input_b) {
+            draw(o, requested_view, width, height, pose_a, pose_b, markers, a, static_cast<const Prepared_object<A>*>(nullptr));
+            return;
+        }
+        with_kernel(kernel_of(*input_b), input_b->size(), [&]<class B>(std::type_identity<B>) {
+            const Prepared_object<B> b = make_object<B>(*input_b, {});
+            draw(o, requested_view, width, height, pose_a, pose_b, markers, a, &b);
+        });
+    });
+}
+
 } // namespace
 
 void register_render(CLI::App& app)
@@ -87,8 +112,10 @@ void register_render(CLI::App& app)
     auto* cmd = app.add_subcommand(
         "render", "Draw one or two posed point clouds and their intersection points into a PNG picture");
     auto o = std::make_shared<Render_options>();
-    cmd->add_option("A", o->file_a, "First point file (.ply, .off, .xyz, .pwn; a mesh gives its vertices)")->required();
-    cmd->add_option("B", o->file_b, "Optional second point file");
+    cmd->add_option("A", o->file_a,
+                    "First point file (.ply, .off, .xyz, .pwn; a mesh gives its vertices), or a prepared object file")
+        ->required();
+    cmd->add_option("B", o->file_b, "Optional second point file or prepared object file");
     cmd->add_option("--transform-a", o->transform_a,
                     "Pose of A: 12 numbers, the 3x4 matrix [R | t] row by row (default: identity)")
         ->expected(1, 12);

@@ -130,7 +130,10 @@ std::pair<std::string, std::size_t> generate_spec(const std::string& spec)
 std::string pose_text(const std::array<double, 12>& m)
 {
     std::string text;
-    for (const double v : m) text += "," + PCCD::Rigid_transform_3<double>::full_digits(v);
+    for (const double v : m) {
+        text += ',';
+        text += PCCD::Rigid_transform_3<double>::full_digits(v);
+    }
     return text;
 }
 

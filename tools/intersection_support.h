@@ -1,6 +1,7 @@
 // tools/intersection_support.h -- what `pccd collide`, `pccd distance` and `pccd bench` share:
 // reading an object from a file (optionally normalized into [-1, 1]^3, doc/manual/sampling.md) and
-// preprocessing it, or loading it from a prepared object file (`pccd prepare`), choosing the leaf intersector by name (doc/manual/intersection.md, the leaf
+// preprocessing it, or loading it from a prepared object file (`pccd prepare`, cli_collide.md,
+// "Prepared objects"), choosing the leaf intersector by name (doc/manual/intersection.md, the leaf
 // intersector policies), running one timed query, and the query's counters as JSON and CSV. It
 // implements the command line of doc/manual/cli_collide.md.
 #pragma once
@@ -428,8 +429,8 @@ struct Prepared_pair {
     double preprocess_ms() const { return a.preprocess_ms + (shared ? 0.0 : b.preprocess_ms); }
 };
 
-/// Preprocesses (or loads, make_object()) the two objects into an A and a B (see Prepared_pair); the same file under two
-/// kernels is preprocessed twice.
+/// Preprocesses (or loads, make_object()) the two objects into an A and a B (see Prepared_pair);
+/// the same file under two kernels is preprocessed twice.
 template <class A, class B>
 Prepared_pair<A, B> prepare_pair(const Two_clouds& clouds, const Object_settings& settings)
 {

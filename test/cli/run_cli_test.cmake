@@ -256,7 +256,7 @@ elseif(CASE STREQUAL "kernel_option")
 elseif(CASE STREQUAL "prepared_objects")
   # pccd prepare writes an object file of each kind; every query command loads it instead of
   # preprocessing, as that kind, and answers exactly as with the point file (the load is bit for
-  # bit); contradicting options are refused before any work.
+  # bit); contradicting options are refused with messages naming the file.
   file(REMOVE "${WORK}/sphere.pccdobj" "${WORK}/torus.pccdlean")
   pccd_run(OK ARGS prepare sphere.xyz sphere.pccdobj --json
            MATCH "\"kernel\": \"geodesic\"" "\"points\": 2000," "\"prepared_file\": false" "\"output\": \"sphere.pccdobj\"")
@@ -298,6 +298,8 @@ elseif(CASE STREQUAL "prepared_objects")
   pccd_run(OK ARGS contact-time sphere.pccdobj torus.pccdlean --from-b 1,0,0,5,0,1,0,0,0,0,1,0
                    --to-b 1,0,0,-5,0,1,0,0,0,0,1,0 --json
            MATCH "\"status\": \"contact\"" "\"kernel\": \"euclidean\"" "\"prepared_file\": true")
+  pccd_run(OK ARGS render sphere.pccdobj torus.pccdlean --transform-b ${shift_1} --intersect --out prepared.png
+           STDOUT_MATCH "intersection_points: intersecting" "A sphere.pccdobj \\(2000 points, blue\\), B torus.pccdlean")
   # A world takes prepared files (their kind decides its one kernel) beside point files.
   pccd_run(OK ARGS world --generate torus.pccdlean:4 --generate sphere.xyz:4 --scene-seed 3 --json
            MATCH "\"kernel\": \"euclidean\"" "\"instances\": 8")
