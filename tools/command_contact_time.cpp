@@ -327,10 +327,7 @@ void run_contact_time(const Contact_time_cli_options& o)
     }
     // Point files make geodesic objects; a prepared object file (pccd prepare) is loaded as its kind.
     const Two_clouds clouds = read_two_clouds(o.file_a, o.file_b, o.normalize);
-    const auto kernel_of = [](const Object_input& input) {
-        return std::string(input.is_prepared() ? PCCD::to_string(input.prepared) : "geodesic");
-    };
-    with_kernels("", kernel_of(clouds.a), kernel_of(clouds.input_b()), clouds,
+    with_kernels("", clouds.a.kernel_or("geodesic"), clouds.input_b().kernel_or("geodesic"), clouds,
                  [&]<class A, class B>(std::type_identity<A>, std::type_identity<B>) {
                      run_contact_time_with<A, B>(o, options, centre_a, centre_b, png_time, cases, {from_a, to_a, from_b, to_b},
                                                  clouds);

@@ -89,16 +89,13 @@ void run_render(const Render_options& o)
     const Object_input input_a = read_object_input(o.file_a, o.normalize);
     std::optional<Object_input> input_b;
     if (!o.file_b.empty()) input_b = read_object_input(o.file_b, o.normalize);
-    const auto kernel_of = [](const Object_input& input) {
-        return std::string(input.is_prepared() ? PCCD::to_string(input.prepared) : "geodesic");
-    };
-    with_kernel(kernel_of(input_a), input_a.size(), [&]<class A>(std::type_identity<A>) {
+    with_kernel(input_a.kernel_or("geodesic"), input_a.size(), [&]<class A>(std::type_identity<A>) {
         const Prepared_object<A> a = make_object<A>(input_a, {});
         if (!input_b) {
             draw(o, requested_view, width, height, pose_a, pose_b, markers, a, static_cast<const Prepared_object<A>*>(nullptr));
             return;
         }
-        with_kernel(kernel_of(*input_b), input_b->size(), [&]<class B>(std::type_identity<B>) {
+        with_kernel(input_b->kernel_or("geodesic"), input_b->size(), [&]<class B>(std::type_identity<B>) {
             const Prepared_object<B> b = make_object<B>(*input_b, {});
             draw(o, requested_view, width, height, pose_a, pose_b, markers, a, &b);
         });

@@ -172,6 +172,9 @@ struct Object_input {
     Object_points points; // empty for a prepared object file
 
     bool is_prepared() const { return prepared != PCCD::Object_file_kind::none; }
+    /// A prepared file's kernel ("geodesic" or "euclidean"), else `kernel` (the commands without a
+    /// --kernel option: "geodesic").
+    std::string kernel_or(const std::string& kernel) const { return is_prepared() ? PCCD::to_string(prepared) : kernel; }
     /// The number of points (a prepared file's, from its opening).
     std::size_t size() const { return is_prepared() ? std::size_t(prepared_points) : points.points.size(); }
 };
