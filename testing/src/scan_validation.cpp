@@ -6,6 +6,17 @@
 
 namespace PCCD::testing {
 
+namespace {
+
+std::vector<Eigen::Vector3d> columns(const Eigen::Matrix3Xd& m)
+{
+    std::vector<Eigen::Vector3d> out(std::size_t(m.cols()));
+    for (Eigen::Index i = 0; i < m.cols(); ++i) out[std::size_t(i)] = m.col(i);
+    return out;
+}
+
+} // namespace
+
 void set_density(Scan_model& model, std::size_t points, std::uint64_t seed)
 {
     model.clean_points = points;

@@ -97,13 +97,6 @@ struct Scan_cloud {
     double preprocessing_ms = 0.0;
 };
 
-inline std::vector<Eigen::Vector3d> columns(const Eigen::Matrix3Xd& m)
-{
-    std::vector<Eigen::Vector3d> out(std::size_t(m.cols()));
-    for (Eigen::Index i = 0; i < m.cols(); ++i) out[std::size_t(i)] = m.col(i);
-    return out;
-}
-
 /// Sets the clean cloud of `model` to `points` points (seed `seed`): its spacing and sampling radius,
 /// which the conditions and the grazing band are relative to. The mesh and its exact reference stay.
 void set_density(Scan_model& model, std::size_t points, std::uint64_t seed);
