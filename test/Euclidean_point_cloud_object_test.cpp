@@ -222,6 +222,38 @@ TEST_CASE("Lean object: given normals decide the orientation, from a file's poin
         CHECK((lean.cloud().position(i).template cast<double>() - data.points[lean.input_index(i)]).norm() == 0.0);
 }
 
+TEST_CASE("Lean object: point data given up is freed and makes the same object", "[lean]")
+{
+    // The rvalue constructor frees the caller's arrays once the object holds its own copy; the object
+    // is the one the const& constructor makes from the same data.
+    const Eigen::Matrix3Xd p = pccd_test::sample_shape(pccd_test::unit_sphere(), 3000, 0.0, 52).points;
+    PCCD::Point_data data;
+    for (Eigen::Index i = 0; i < p.cols(); ++i) {
+        data.points.push_back(p.col(i));
+        data.normals.push_back(p.col(i));
+    }
+    const Lean kept(data);
+    PCCD::Point_data given = data;
+    const Lean taken(std::move(given));
+    CHECK(given.points.empty());
+    CHECK(given.points.capacity() == 0);
+    CHECK(given.normals.capacity() == 0);
+    REQUIRE(taken.size() == kept.size());
+    CHECK(taken.cloud().coordinates() == kept.cloud().coordinates());
+    CHECK(taken.normals() == kept.normals());
+    CHECK(taken.normals_given());
+    for (const double d : {1.8, 2.2}) { // unit spheres: touching below 2
+        const bool answer = PCCD::do_intersect(taken, shifted(0), kept, shifted(d), {.seed = 3}).intersects;
+        CHECK(answer == (d < 2.0));
+        CHECK(answer == PCCD::do_intersect(kept, shifted(0), kept, shifted(d), {.seed = 3}).intersects);
+    }
+    // Bad data given up is rejected as before.
+    PCCD::Point_data bad;
+    bad.points = {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0)};
+    bad.normals = {Eigen::Vector3d(0, 0, 1)};
+    CHECK_THROWS_AS(Lean(std::move(bad)), PCCD::Invalid_input);
+}
+
 TEST_CASE("Lean object: a saved object loads back identical and answers as it did", "[lean][io]")
 {
     const auto sample = pccd_test::sample_shape(pccd_test::unit_sphere(), 3000, 0.05, 61);

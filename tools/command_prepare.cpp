@@ -28,9 +28,10 @@ struct Prepare_options {
 };
 
 template <class Object>
-void prepare_and_save(const Prepare_options& o, const Object_points& points)
+void prepare_and_save(const Prepare_options& o, Object_points&& points)
 {
-    const Prepared_object<Object> prepared = prepare_object<Object>(points, o.input, o.object);
+    // The points are the object's to free once it holds its copy (the lean object does).
+    const Prepared_object<Object> prepared = prepare_object<Object>(std::move(points), o.input, o.object);
     const Clock::time_point start = Clock::now();
     prepared.object.save(o.output);
     const double save_ms = ms_since(start);
@@ -55,12 +56,13 @@ void run_prepare(const Prepare_options& o)
 {
     if (same_file(o.input, o.output))
         throw PCCD::Invalid_input("pccd prepare: the output " + o.output + " is the input file");
-    const Object_input input = read_object_input(o.input, o.normalize);
+    Object_input input = read_object_input(o.input, o.normalize);
     if (input.is_prepared())
         throw PCCD::Invalid_input(o.input + ": already a prepared object file (" + PCCD::to_string(input.prepared) +
                                   " kernel); pccd prepare reads point files (.ply, .off, .xyz)");
-    with_kernel(o.kernel, input.size(),
-                [&]<class Object>(std::type_identity<Object>) { prepare_and_save<Object>(o, input.points); });
+    with_kernel(o.kernel, input.size(), [&]<class Object>(std::type_identity<Object>) {
+        prepare_and_save<Object>(o, std::move(input.points));
+    });
 }
 
 } // namespace

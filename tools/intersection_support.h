@@ -375,15 +375,18 @@ inline void add_object_settings(CLI::App* cmd, Object_settings& settings, bool w
 /// Preprocesses the points with the options `settings` choose (Point_cloud_object's defaults
 /// unless told otherwise); normals, when present, are hints that orient the object's normals (as
 /// `pccd eval` does).
+/// `input` given as an rvalue is handed to the object, which may free it early (the lean object
+/// frees the points once it holds its copy: `pccd prepare`).
 /// \throws PCCD::Invalid_input, naming `name`, when no point has a normal: the points are too few
 ///         or too degenerate (e.g. all on one line) to make a surface, and every query would answer
 ///         "separate" without looking; and as object_options() on bad settings.
-template <class Object = PCCD::Point_cloud_object<>>
-Prepared_object<Object> prepare_object(const Object_points& input, const std::string& name,
-                                       const Object_settings& settings = {})
+template <class Object = PCCD::Point_cloud_object<>, class Points>
+    requires std::same_as<std::remove_cvref_t<Points>, Object_points>
+Prepared_object<Object> prepare_object(Points&& input, const std::string& name, const Object_settings& settings = {})
 {
     const Clock::time_point start = Clock::now();
-    Object object(input, with_progress(object_options(settings, input.points.size()), name));
+    const std::size_t points = input.points.size();
+    Object object(std::forward<Points>(input), with_progress(object_options(settings, points), name));
     if (object.orientation().unoriented == object.size())
         throw PCCD::Invalid_input(name + ": no point has a surface normal: its " + std::to_string(object.size()) +
                                   " points are too few or too degenerate (e.g. all on one line) to make a surface");

@@ -84,6 +84,13 @@ public:
         : m_data(from_point_data(data, options))
     {
     }
+    /// The same, taking the data over: its points and normals are freed as soon as the object holds
+    /// its own copies, before the rest of the preprocessing (at 10^7 points the peak is 240 MB
+    /// lower). `data` is left empty.
+    explicit Euclidean_point_cloud_object(Point_data&& data, const Point_cloud_object_options& options = {})
+        : m_data(from_point_data(data, options, &data))
+    {
+    }
     /// @}
 
     /// \name Files (defined in PCCD/Euclidean_point_cloud_object_file.h)
@@ -162,7 +169,9 @@ private:
     explicit Euclidean_point_cloud_object(std::shared_ptr<const Data> data) : m_data(std::move(data)) {}
     static Euclidean_point_cloud_object load_file(const std::string& path, const Point_cloud_hierarchy_options* hierarchy);
 
-    static std::shared_ptr<const Data> from_point_data(const Point_data& data, const Point_cloud_object_options& options)
+    /// `taken`: `data` itself when the caller gave it up; its arrays are freed once copied.
+    static std::shared_ptr<const Data> from_point_data(const Point_data& data, const Point_cloud_object_options& options,
+                                                       Point_data* taken = nullptr)
     {
         std::optional<Eigen::Matrix3Xd> normals;
         if (data.has_normals()) {
@@ -173,8 +182,12 @@ private:
             for (std::size_t i = 0; i < data.normals.size(); ++i) normals->col(Eigen::Index(i)) = data.normals[i];
         }
         // The points go straight from the data into the cloud (no copy between).
-        return preprocess(Base::timed_cloud(data.points, Identity_point_map<Eigen::Vector3d>(), options), std::move(normals),
-                          options);
+        typename Base::Timed_cloud built = Base::timed_cloud(data.points, Identity_point_map<Eigen::Vector3d>(), options);
+        if (taken) {
+            std::vector<Eigen::Vector3d>().swap(taken->points);
+            std::vector<Eigen::Vector3d>().swap(taken->normals);
+        }
+        return preprocess(std::move(built), std::move(normals), options);
     }
 
     static std::shared_ptr<const Data> preprocess(typename Base::Timed_cloud built,

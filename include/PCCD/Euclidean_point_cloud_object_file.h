@@ -25,7 +25,7 @@ namespace PCCD {
 template <PointCloudKernel K>
 void Euclidean_point_cloud_object<K>::save(const std::string& path) const
 {
-    internal::write_object_file(path, internal::lean_object_magic, file_version, *this, nullptr);
+    internal::write_object_file(path, internal::lean_object_magic, file_version, *this, [](internal::Binary_writer&) {});
 }
 
 template <PointCloudKernel K>
@@ -46,18 +46,17 @@ template <PointCloudKernel K>
 Euclidean_point_cloud_object<K> Euclidean_point_cloud_object<K>::load_file(const std::string& path,
                                                                            const Point_cloud_hierarchy_options* hierarchy)
 {
-    std::string bytes = internal::read_binary_file(path);
     internal::Object_file_parts parts;
     {
-        internal::Binary_reader in(bytes, path);
-        internal::read_object_file_header(in, bytes, file_version, true);
+        // Read from the file straight into the parts' arrays: nothing of the file is held beside them.
+        std::uint64_t size = 0;
+        std::ifstream file = internal::open_binary_file(path, size);
+        internal::Binary_reader in(file, size, path);
+        internal::read_object_file_header(in, file, size, file_version, true);
         // Its sections are those of Point_cloud_object's format 5, the hierarchy included.
         parts = internal::read_object_parts(in, 5);
         if (in.remaining() != sizeof(std::uint64_t)) in.fail("unexpected bytes after the hierarchy section");
     }
-    // The file's bytes are all read: freed before the kd-tree and the hierarchy are built (at 10^7
-    // points this keeps the peak of a load from 2.8 to about 2 GB, doc/manual/surface.md).
-    std::string().swap(bytes);
     const Point_cloud_hierarchy_options options = internal::loaded_hierarchy_options(parts, hierarchy);
     try {
         const auto start = internal::Steady_clock::now();

@@ -1,35 +1,63 @@
 // PCCD/Point_cloud_object_file.h -- the object file format of Point_cloud_object: the
 // definitions of save() and load() and their helpers, through the little-endian binary reader and
-// writer of PCCD/internal/binary_stream.h. Included by PCCD/Point_cloud_object.h. Implements
-// doc/manual/surface.md, "One call: Point_cloud_object" (save and load).
+// writer of PCCD/internal/binary_stream.h, streamed: a save writes to the file as it goes and a
+// load reads it straight into the object's arrays, neither holding the file's bytes. Included by
+// PCCD/Point_cloud_object.h. Implements doc/manual/surface.md, "One call: Point_cloud_object"
+// (save and load).
 #pragma once
 
 #include <PCCD/Point_cloud_object_class.h>
 #include <PCCD/object_file_info.h>
 
+#include <algorithm>
+#include <fstream>
 #include <numeric>
+#include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 namespace PCCD {
 
 namespace internal {
 
-/// A read-only stream buffer over bytes held elsewhere, without copying them (the geodesic section
-/// of a loaded object file, read in place).
-class Span_streambuf : public std::streambuf {
-public:
-    Span_streambuf(const char* data, std::size_t size)
-    {
-        char* begin = const_cast<char*>(data); // a get area only: never written through
-        setg(begin, begin, begin + size);
-    }
-};
-
-inline std::string read_binary_file(const std::string& path)
+/// The file `path` opened for reading; `size` is set to its size in bytes (0 when the size cannot
+/// be told, as for a directory: every read of it then fails as a truncated file).
+inline std::ifstream open_binary_file(const std::string& path, std::uint64_t& size)
 {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw File_error(path, "cannot open the file: it does not exist or is not readable");
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    in.seekg(0, std::ios::end);
+    const std::streamoff end = in.tellg();
+    size = end > 0 ? std::uint64_t(end) : 0;
+    in.clear();
+    in.seekg(0);
+    return in;
+}
+
+/// Compares the checksum stored in the last 8 bytes of the `size`-byte file `file` with that of the
+/// bytes before them, read in chunks of 1 MiB (nothing of the file is held), and puts `file` back
+/// where it was. Errors are `in`'s.
+inline void check_trailing_checksum(std::istream& file, std::uint64_t size, const Binary_reader& in)
+{
+    if (size < sizeof(std::uint64_t)) in.fail("truncated file");
+    const std::streampos resume = file.tellg();
+    file.seekg(0);
+    Word_checksum checksum;
+    std::vector<char> chunk(std::size_t(1) << 20);
+    for (std::uint64_t left = size - sizeof(std::uint64_t); left > 0;) {
+        const auto take = std::size_t(std::min<std::uint64_t>(left, chunk.size()));
+        file.read(chunk.data(), std::streamsize(take));
+        if (std::size_t(file.gcount()) != take) in.fail("truncated file");
+        checksum.update(chunk.data(), take);
+        left -= take;
+    }
+    char stored[sizeof(std::uint64_t)];
+    file.read(stored, sizeof stored);
+    if (std::size_t(file.gcount()) != sizeof stored) in.fail("truncated file");
+    if (decode_little_endian<std::uint64_t>(stored) != checksum.value())
+        in.fail("checksum mismatch: the file is truncated or corrupted");
+    file.clear();
+    file.seekg(resume);
 }
 
 } // namespace internal
@@ -61,10 +89,10 @@ inline void read_scan_section(Binary_reader& in, std::uint64_t n, Scan_estimate&
 }
 
 /// The opening of an object file: magic (`lean`: a lean object's), format version (1 to `newest`),
-/// byte-order mark, and the checksum over the whole file. Returns the version; fails on `in`
-/// otherwise, naming the loader of the other kind's file.
-inline std::uint32_t read_object_file_header(Binary_reader& in, const std::string& bytes, std::uint32_t newest,
-                                             bool lean = false)
+/// byte-order mark, and the checksum over the whole file (`file`, of `size` bytes, the stream `in`
+/// reads). Returns the version; fails on `in` otherwise, naming the loader of the other kind's file.
+inline std::uint32_t read_object_file_header(Binary_reader& in, std::istream& file, std::uint64_t size,
+                                             std::uint32_t newest, bool lean = false)
 {
     char magic[8];
     in.read(magic, sizeof magic);
@@ -80,11 +108,7 @@ inline std::uint32_t read_object_file_header(Binary_reader& in, const std::strin
     if (version == 0 || version > newest)
         in.fail(concat("object file format version ", version, ", this PCCD reads versions 1 to ", newest));
     if (in.get<std::uint32_t>() != byte_order_mark) in.fail("written on a machine of another byte order");
-    if (bytes.size() < sizeof(std::uint64_t)) in.fail("truncated file");
-    Word_checksum checksum;
-    checksum.update(bytes.data(), bytes.size() - sizeof(std::uint64_t));
-    const auto stored = decode_little_endian<std::uint64_t>(bytes.data() + bytes.size() - sizeof(std::uint64_t));
-    if (stored != checksum.value()) in.fail("checksum mismatch: the file is truncated or corrupted");
+    check_trailing_checksum(file, size, in);
     return version;
 }
 
@@ -208,8 +232,13 @@ void write_object_parts(Binary_writer& out, const Object& object)
     out.put(std::uint64_t(object.orientation().unoriented));
     const Preprocessing_times& t = object.timings();
     for (double x : {t.kd_tree, t.graph, t.sampling_radius, t.cpsp, t.normals}) out.put(x);
-    const Eigen::Matrix3Xd points = object.cloud().coordinates().template cast<double>();
-    out.write(points.data(), sizeof(double) * std::size_t(points.size()));
+    const auto& coordinates = object.cloud().coordinates();
+    if constexpr (std::is_same_v<std::decay_t<decltype(coordinates)>, Eigen::Matrix3Xd>) {
+        out.write(coordinates.data(), sizeof(double) * std::size_t(coordinates.size()));
+    } else {
+        const Eigen::Matrix3Xd points = coordinates.template cast<double>();
+        out.write(points.data(), sizeof(double) * std::size_t(points.size()));
+    }
     out.write(object.normals().data(), sizeof(double) * std::size_t(object.normals().size()));
     const Scan_estimate& scan = object.scan();
     out.put(scan.noise);
@@ -231,25 +260,25 @@ void write_object_parts(Binary_writer& out, const Object& object)
 }
 
 /// Writes `object`'s file to `path` (replaced if it exists): `magic`, `version`, the byte-order
-/// mark, its parts (write_object_parts()), then `extra` with its size first unless it is null (the
-/// geodesic section), and the checksum.
-template <class Object>
+/// mark, its parts (write_object_parts()), then what `sections` writes (called with the writer:
+/// the geodesic section), and the checksum. Streamed to the file through a buffer of 1 MiB:
+/// nothing of the file is held in memory.
+template <class Object, class Sections>
 void write_object_file(const std::string& path, const char (&magic)[8], std::uint32_t version, const Object& object,
-                       const std::string* extra)
+                       Sections&& sections)
 {
-    Binary_writer out;
+    std::vector<char> buffer(std::size_t(1) << 20);
+    std::ofstream file;
+    file.rdbuf()->pubsetbuf(buffer.data(), std::streamsize(buffer.size()));
+    file.open(path, std::ios::binary | std::ios::trunc);
+    if (!file) throw File_error(path, "cannot open the file for writing");
+    Binary_writer out(file, path);
     out.write(magic, sizeof magic);
     out.put(version);
     out.put(byte_order_mark);
     write_object_parts(out, object);
-    if (extra) {
-        out.put(std::uint64_t(extra->size()));
-        out.write(extra->data(), extra->size());
-    }
+    sections(out);
     out.finish();
-    std::ofstream file(path, std::ios::binary | std::ios::trunc);
-    if (!file) throw File_error(path, "cannot open the file for writing");
-    file.write(out.bytes().data(), std::streamsize(out.bytes().size()));
     file.close();
     if (!file) throw File_error(path, "write failed (disk full?)");
 }
@@ -282,11 +311,18 @@ template <PointCloudKernel K>
 void Point_cloud_object<K>::save(const std::string& path) const
 {
     const Data& d = *m_data;
-    std::ostringstream geodesic_stream(std::ios::binary);
-    internal::write_geodesic_stream(geodesic_stream, path, *d.graph, *d.cpsp);
-    const std::string geodesic = std::move(geodesic_stream).str();
-
-    internal::write_object_file(path, internal::object_magic, file_version, *this, &geodesic);
+    internal::check_same_points(*d.graph, *d.cpsp);
+    // The geodesic section goes straight to the file behind its size, known beforehand.
+    const std::uint64_t geodesic_size =
+        internal::geodesic_file_size(d.graph->num_vertices(), d.graph->targets().size(), d.cpsp->num_entries());
+    internal::write_object_file(path, internal::object_magic, file_version, *this, [&](internal::Binary_writer& out) {
+        out.put(geodesic_size);
+        const std::uint64_t written = out.write_section(
+            [&](std::ostream& section) { internal::write_geodesic_stream(section, path, *d.graph, *d.cpsp); });
+        if (written != geodesic_size)
+            throw std::logic_error(internal::concat("Point_cloud_object::save: the geodesic section has ", written,
+                                                    " bytes, not the ", geodesic_size, " its format gives"));
+    });
 }
 
 template <PointCloudKernel K>
@@ -305,9 +341,10 @@ Point_cloud_object<K> Point_cloud_object<K>::load(const std::string& path, const
 template <PointCloudKernel K>
 Point_cloud_object<K> Point_cloud_object<K>::load_file(const std::string& path, const Point_cloud_hierarchy_options* hierarchy)
 {
-    const std::string bytes = internal::read_binary_file(path);
-    internal::Binary_reader in(bytes, path);
-    const std::uint32_t version = internal::read_object_file_header(in, bytes, file_version);
+    std::uint64_t size = 0;
+    std::ifstream file = internal::open_binary_file(path, size);
+    internal::Binary_reader in(file, size, path);
+    const std::uint32_t version = internal::read_object_file_header(in, file, size, file_version);
     internal::Object_file_parts parts = internal::read_object_parts(in, version);
     const Point_cloud_hierarchy_options hierarchy_options = internal::loaded_hierarchy_options(parts, hierarchy);
     const std::uint64_t n = parts.n;
@@ -315,9 +352,8 @@ Point_cloud_object<K> Point_cloud_object<K>::load_file(const std::string& path, 
     if (in.remaining() < sizeof(std::uint64_t) || in.remaining() - sizeof(std::uint64_t) != geodesic_size)
         in.fail("inconsistent size of the geodesic section");
 
-    internal::Span_streambuf geodesic_section(bytes.data() + in.position(), geodesic_size);
-    std::istream geodesic_stream(&geodesic_section);
-    Geodesic_data geodesic = internal::read_geodesic_stream(geodesic_stream, geodesic_size, path, "geodesic section: ");
+    // The section follows in the file, where `in` stopped (it reads the stream unbuffered).
+    Geodesic_data geodesic = internal::read_geodesic_stream(file, geodesic_size, path, "geodesic section: ");
     if (geodesic.graph.num_vertices() != n || geodesic.cpsp.size() != n)
         in.fail("the geodesic section does not have one vertex per point");
 

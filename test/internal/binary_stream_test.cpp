@@ -123,3 +123,39 @@ TEST_CASE("the binary writer and reader agree and check sizes", "[io]")
     PCCD::internal::Binary_reader odd(bytes, "odd");
     REQUIRE_THROWS_AS(odd.read(&one, 3), PCCD::Invalid_input);
 }
+
+TEST_CASE("a section written through a stream counts in the enclosing writer's checksum", "[io]")
+{
+    // The same bytes, once written directly and once by another writer into write_section()'s
+    // stream (as the geodesic section of an object file is), give the same file, checksum included.
+    const std::vector<std::uint32_t> values = {7, 0xFFFFFFFF, 0x01020304};
+    PCCD::internal::Binary_writer inner_alone;
+    inner_alone.put(values);
+    inner_alone.put(std::uint8_t{9});
+    inner_alone.finish(); // the section's own checksum is part of the section
+    PCCD::internal::Binary_writer direct;
+    direct.put(std::uint16_t{0xABCD});
+    direct.write(inner_alone.bytes().data(), inner_alone.bytes().size());
+    direct.write("xy", 2);
+    direct.put(std::uint8_t{0x5A});
+    direct.finish();
+
+    for (const bool to_stream : {false, true}) {
+        std::ostringstream file(std::ios::binary);
+        PCCD::internal::Binary_writer sectioned =
+            to_stream ? PCCD::internal::Binary_writer(file, "file") : PCCD::internal::Binary_writer();
+        sectioned.put(std::uint16_t{0xABCD});
+        const std::uint64_t written = sectioned.write_section([&](std::ostream& section) {
+            PCCD::internal::Binary_writer inner(section, "section");
+            inner.put(values);
+            inner.put(std::uint8_t{9});
+            inner.finish();
+        });
+        CHECK(written == inner_alone.bytes().size());
+        // Characters one at a time take the stream buffer's other path.
+        CHECK(sectioned.write_section([](std::ostream& section) { section.put('x').put('y'); }) == 2);
+        sectioned.put(std::uint8_t{0x5A});
+        sectioned.finish();
+        CHECK((to_stream ? file.str() : sectioned.bytes()) == direct.bytes());
+    }
+}

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <queue>
 #include <tuple>
 #include <type_traits>
@@ -162,15 +163,24 @@ void propagate_signs(const Graph& g, const Eigen::MatrixBase<Positions>& positio
     // hinted points at once, or, without hints, from its smallest index. The heap holds candidate
     // tree edges (weight, vertex, parent); the smallest weight, then the smallest vertex index, then
     // the smallest parent index, is taken first.
+    // A candidate heavier than one already in the heap for the same vertex is never taken first, so
+    // it is not pushed (`lightest`: the lightest candidate weight pushed for each vertex): the same
+    // tree, with a heap a few times smaller (on flat scans, whose weights are all near 0, Prim's
+    // frontier grows wide and the heap's cache misses were most of the orientation's time).
     using Candidate = std::tuple<double, std::uint32_t, std::uint32_t>;
     std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> heap;
     std::vector<char> seen(n, 0), in_tree(n, 0);
+    std::vector<double> lightest(n, std::numeric_limits<double>::infinity());
     std::vector<std::uint32_t> members, hinted, order;
     const auto push_edges = [&](std::uint32_t v) {
+        const Eigen::Vector3d unit_v = unit(v);
         for (auto [e, e_end] = out_edges(v, g); e != e_end; ++e) {
             const std::uint32_t w = followed(*e, v);
             if (w == v || in_tree[w] || !has_normal[w]) continue;
-            heap.emplace(orientation_edge_weight(unit(v), unit(w), edge(v, w)), w, v);
+            const double weight = orientation_edge_weight(unit_v, unit(w), edge(v, w));
+            if (weight > lightest[w]) continue;
+            lightest[w] = weight;
+            heap.emplace(weight, w, v);
         }
     };
     for (std::size_t root = 0; root < n; ++root) {

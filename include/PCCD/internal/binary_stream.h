@@ -20,6 +20,7 @@
 #include <istream>
 #include <limits>
 #include <ostream>
+#include <streambuf>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -171,7 +172,49 @@ public:
     /// What was written, when writing into memory.
     const std::string& bytes() const noexcept { return m_bytes; }
 
+    /// Calls `write` with a std::ostream whose bytes go where this writer's go, in order, and count
+    /// in this writer's checksum: a section written by a function that writes to a stream (the
+    /// geodesic section of an object file), without holding it in memory first. Returns the number
+    /// of bytes `write` wrote.
+    template <class Write>
+    std::uint64_t write_section(Write&& write)
+    {
+        Section_buffer buffer(*this);
+        std::ostream section(&buffer);
+        section.exceptions(std::ios::badbit); // a failed write of this writer reaches the caller
+        write(section);
+        section.flush();
+        return buffer.count();
+    }
+
 private:
+    /// The stream buffer of write_section(): unbuffered, every byte through emit().
+    class Section_buffer : public std::streambuf {
+    public:
+        explicit Section_buffer(Binary_writer& writer) : m_writer(writer) {}
+        std::uint64_t count() const noexcept { return m_count; }
+
+    protected:
+        std::streamsize xsputn(const char* data, std::streamsize size) override
+        {
+            m_writer.emit(reinterpret_cast<const unsigned char*>(data), std::size_t(size));
+            m_count += std::uint64_t(size);
+            return size;
+        }
+        int_type overflow(int_type c) override
+        {
+            if (traits_type::eq_int_type(c, traits_type::eof())) return traits_type::not_eof(c);
+            const auto byte = static_cast<unsigned char>(traits_type::to_char_type(c));
+            m_writer.emit(&byte, 1);
+            ++m_count;
+            return c;
+        }
+
+    private:
+        Binary_writer& m_writer;
+        std::uint64_t m_count = 0;
+    };
+
     void emit(const unsigned char* data, std::size_t size)
     {
         m_checksum.update(data, size);
