@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <limits>
 #include <set>
 #include <string>
@@ -334,4 +335,24 @@ TEST_CASE("serialized geodesic data: truncated, corrupted and crafted files", "[
             {"graph edge 0 points to vertex " + std::to_string(n + 5)});
     crafted("target_changed", [&](std::string& b) { put(b, targets, get<std::uint32_t>(b, targets + 4)); },
             {"graph"});
+}
+
+TEST_CASE("serialized objects: a save that cannot be written", "[robustness]")
+{
+    // save() streams the file as it goes: a full disk (/dev/full accepts the open and fails every
+    // write) is a File_error naming the file, from the parts and from the geodesic section, which is
+    // written through the enclosing writer; a directory that does not exist fails at the open.
+    REQUIRE(std::filesystem::exists("/dev/full"));
+    require_file_error("/dev/full", [&] { small_object().save("/dev/full"); }, {"write failed (disk full?)"});
+    const std::string no_dir = path_of("no_such_directory/object.pccdobj");
+    require_file_error(no_dir, [&] { small_object().save(no_dir); }, {"cannot open the file for writing"});
+    // The small object fits in the writer's 1 MiB buffer: its failure comes at the last flush. At
+    // 5,000 points the parts (about 65 B per point) still fit and the geodesic section (about 450 B
+    // per point) does not: the failure comes from inside that section's writer.
+    const Object larger(fibonacci_sphere(5000));
+    require_file_error("/dev/full", [&] { larger.save("/dev/full"); }, {"write failed (disk full?)"});
+    // A save after a failed one writes a file that loads back.
+    const std::string path = path_of("after_failure.pccdobj");
+    small_object().save(path);
+    CHECK(Object::load(path).size() == small_object().size());
 }
