@@ -312,6 +312,8 @@ elseif(CASE STREQUAL "prepared_objects")
   pccd_run(FAIL ARGS collide sphere.pccdobj torus.ply --normalize MATCH "cannot be normalized")
   pccd_run(FAIL ARGS collide sphere.pccdobj torus.ply --surface sharp MATCH "keeps its surface")
   pccd_run(FAIL ARGS prepare sphere.pccdobj again.pccdobj MATCH "already a prepared object file")
+  pccd_run(FAIL ARGS bench torus.pccdlean --rotations 1
+           MATCH "torus.pccdlean: a prepared object file \\(euclidean kernel\\); pccd bench normalizes")
   pccd_run(FAIL ARGS prepare sphere.xyz sphere.xyz MATCH "is the input file")
   execute_process(COMMAND head -c 1000 sphere.pccdobj OUTPUT_FILE cut.pccdobj WORKING_DIRECTORY ${WORK})
   pccd_run(FAIL ARGS collide cut.pccdobj torus.ply MATCH "cut.pccdobj: .*(truncated|checksum)")
