@@ -18,7 +18,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <numeric>
@@ -79,15 +78,10 @@ std::vector<double> parse_distances(const std::string& spec)
 ///         normalizes its object, which a prepared object cannot be (it keeps its points).
 Object_points load_bench_points(const Bench_options& o, std::string& description)
 {
-    // (A missing or unreadable file is left to the readers below, whose messages say so.)
-    std::error_code error;
-    if (std::filesystem::is_regular_file(o.file, error)) {
-        const PCCD::Object_file_info info = PCCD::object_file_info(o.file);
-        if (info.kind != PCCD::Object_file_kind::none)
-            throw PCCD::Invalid_input(o.file + ": a prepared object file (" + PCCD::to_string(info.kind) +
-                                      " kernel); pccd bench normalizes its object into [-1,1]^3, which a prepared "
-                                      "object cannot be: give the mesh or point file it was prepared from");
-    }
+    if (const PCCD::Object_file_info info = prepared_file_info(o.file); info.kind != PCCD::Object_file_kind::none)
+        throw PCCD::Invalid_input(o.file + ": a prepared object file (" + PCCD::to_string(info.kind) +
+                                  " kernel); pccd bench normalizes its object into [-1,1]^3, which a prepared "
+                                  "object cannot be: give the mesh or point file it was prepared from");
     const std::optional<PCCD::IO::Format> format = PCCD::IO::format_from_extension(o.file);
     if (format == PCCD::IO::Format::off || format == PCCD::IO::Format::ply) {
         std::optional<PCCD::Triangle_mesh_data> mesh;

@@ -179,21 +179,27 @@ struct Object_input {
     std::size_t size() const { return is_prepared() ? std::size_t(prepared_points) : points.points.size(); }
 };
 
+/// What PCCD::object_file_info() tells of the command argument `path`; kind none, without opening
+/// it, when it is not a regular file (missing or a directory: the point readers then say so).
+inline PCCD::Object_file_info prepared_file_info(const std::string& path)
+{
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error)) return {};
+    return PCCD::object_file_info(path);
+}
+
 /// Reads the object argument `path`: a prepared object file is only recognized here (by its
 /// magic), a point file is read (and normalized into [-1, 1]^3 when asked).
 /// \throws PCCD::Invalid_input when asked to normalize a prepared object file (its points are fixed:
 ///         prepare it with --normalize); PCCD::File_error as PCCD::IO::read_points.
 inline Object_input read_object_input(const std::string& path, bool normalize)
 {
-    std::error_code error;
-    if (std::filesystem::is_regular_file(path, error)) {
-        const PCCD::Object_file_info info = PCCD::object_file_info(path);
-        if (info.kind != PCCD::Object_file_kind::none) {
-            if (normalize)
-                throw PCCD::Invalid_input(path + ": a prepared object file cannot be normalized (--normalize): its points "
-                                                 "are fixed; prepare it from its point file with --normalize");
-            return {path, info.kind, info.points, {}};
-        }
+    const PCCD::Object_file_info info = prepared_file_info(path);
+    if (info.kind != PCCD::Object_file_kind::none) {
+        if (normalize)
+            throw PCCD::Invalid_input(path + ": a prepared object file cannot be normalized (--normalize): its points "
+                                             "are fixed; prepare it from its point file with --normalize");
+        return {path, info.kind, info.points, {}};
     }
     return {path, PCCD::Object_file_kind::none, 0, read_object_points(path, normalize)};
 }
