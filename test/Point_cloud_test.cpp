@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -57,25 +59,26 @@ std::vector<PCCD::Neighbor<FT>> brute_force_all(const Coords<FT>& c, const Eigen
     return all;
 }
 
+// Queries of `cloud` (k nearest, radius, nearest) against brute force over `coords`, `queries`
+// times, at points of the cloud and at random positions.
 template <class FT>
-void check_against_brute_force(const std::string& kind)
+void check_queries(const PCCD::Point_cloud<PCCD::Eigen_kernel<FT>>& cloud, const Coords<FT>& coords,
+                   PCCD::Random_engine& rng, int queries = 200)
 {
-    PCCD::Random_engine rng(1234);
-    const int n = 1500;
-    const Coords<FT> coords = make_cloud<FT>(kind, n, rng);
-    const PCCD::Point_cloud<PCCD::Eigen_kernel<FT>> cloud(coords);
+    const Eigen::Index n = coords.cols();
     REQUIRE(cloud.size() == std::size_t(n));
+    REQUIRE(cloud.coordinates() == coords);
     CHECK(cloud.bbox().min() == coords.rowwise().minCoeff());
     CHECK(cloud.bbox().max() == coords.rowwise().maxCoeff());
-
     std::vector<PCCD::Neighbor<FT>> got;
-    for (int t = 0; t < 200; ++t) {
+    for (int t = 0; t < queries; ++t) {
         // Queries both at cloud points (exact duplicates of data) and at random positions.
         Eigen::Matrix<FT, 3, 1> q = (t % 2 == 0) ? Eigen::Matrix<FT, 3, 1>(coords.col(Eigen::Index(PCCD::uniform_index(rng, n))))
                                                  : make_cloud<FT>("random", 1, rng).col(0);
         const auto all = brute_force_all(coords, q);
         for (std::size_t k : {std::size_t(1), std::size_t(2), std::size_t(8), std::size_t(33)}) {
             cloud.k_nearest(q, k, got);
+            k = std::min(k, std::size_t(n));
             REQUIRE(got.size() == k);
             for (std::size_t i = 0; i < k; ++i) REQUIRE(got[i] == all[i]); // order and tie-break too
         }
@@ -89,7 +92,79 @@ void check_against_brute_force(const std::string& kind)
     }
 }
 
+template <class FT>
+void check_against_brute_force(const std::string& kind)
+{
+    PCCD::Random_engine rng(1234);
+    const Coords<FT> coords = make_cloud<FT>(kind, 1500, rng);
+    check_queries<FT>(PCCD::Point_cloud<PCCD::Eigen_kernel<FT>>(coords), coords, rng);
+}
+
+// The columns of `c` but those in `removed` (sorted).
+template <class FT>
+Coords<FT> without_columns(const Coords<FT>& c, const std::vector<std::uint32_t>& removed)
+{
+    Coords<FT> kept(3, c.cols() - Eigen::Index(removed.size()));
+    Eigen::Index next = 0;
+    for (Eigen::Index i = 0; i < c.cols(); ++i)
+        if (!std::binary_search(removed.begin(), removed.end(), std::uint32_t(i))) kept.col(next++) = c.col(i);
+    return kept;
+}
+
 } // namespace
+
+TEMPLATE_TEST_CASE("a cloud without some of its points answers as brute force on the points left", "[point_cloud]",
+                   float, double)
+{
+    // The kd-tree kept with the removed points dropped from its leaves (the cloud alone holds its
+    // points) and the tree built afresh (a copy is alive) must both answer exactly.
+    using Cloud = PCCD::Point_cloud<PCCD::Eigen_kernel<TestType>>;
+    PCCD::Random_engine rng(4321);
+    for (const char* kind : {"random", "planar", "grid", "duplicated"}) {
+        const Coords<TestType> coords = make_cloud<TestType>(kind, 1200, rng);
+        std::vector<std::uint32_t> scattered, block, all_but_two;
+        for (std::uint32_t i = 0; i < 1200; ++i) {
+            if (PCCD::uniform_01(rng) < 0.1) scattered.push_back(i);
+            if (i >= 300 && i < 700) block.push_back(i);
+            if (i != 17 && i != 1100) all_but_two.push_back(i);
+        }
+        for (const auto* removed : {&scattered, &block, &all_but_two}) {
+            for (const bool shared : {false, true}) {
+                INFO("input family " << kind << ", " << removed->size() << " removed, copy alive: " << shared);
+                Cloud cloud(coords);
+                const std::optional<Cloud> copy = shared ? std::optional<Cloud>(cloud) : std::nullopt;
+                const Cloud left(std::move(cloud), *removed);
+                check_queries<TestType>(left, without_columns(coords, *removed), rng, 60);
+                if (copy) check_queries<TestType>(*copy, coords, rng, 10); // the copy is untouched
+            }
+        }
+    }
+    // The tree alone, with leaves of one point (whole leaves emptied) and of 64.
+    for (const std::size_t leaf : {std::size_t(1), std::size_t(64)}) {
+        const Coords<TestType> coords = make_cloud<TestType>("random", 800, rng);
+        const std::vector<std::uint32_t> removed{0, 5, 6, 7, 400, 799};
+        const PCCD::Kd_tree<TestType> tree = PCCD::Kd_tree<TestType>(coords, leaf).without(removed);
+        const Coords<TestType> kept = without_columns(coords, removed);
+        REQUIRE(tree.coordinates() == kept);
+        for (int t = 0; t < 50; ++t) {
+            const Eigen::Matrix<TestType, 3, 1> q = make_cloud<TestType>("random", 1, rng).col(0);
+            const auto all = brute_force_all(kept, q);
+            const auto got = tree.k_nearest(q, 12);
+            CHECK(std::equal(got.begin(), got.end(), all.begin()));
+        }
+    }
+    // Bad removals: unsorted, repeated, out of range, every point.
+    const Coords<TestType> coords = make_cloud<TestType>("random", 50, rng);
+    const auto remove = [&](std::vector<std::uint32_t> removed) { return Cloud(Cloud(coords), removed); };
+    CHECK_THROWS_WITH(remove({3, 1}), Catch::Contains("must be sorted indices below 50, each once"));
+    CHECK_THROWS_AS(remove({1, 1}), PCCD::Invalid_input);
+    CHECK_THROWS_AS(remove({1, 50}), PCCD::Invalid_input);
+    std::vector<std::uint32_t> every(50);
+    std::iota(every.begin(), every.end(), 0u);
+    CHECK_THROWS_WITH(remove(every), Catch::Contains("leaves none"));
+    CHECK(remove({}).size() == 50);
+    CHECK_THROWS_AS(PCCD::Kd_tree<TestType>(coords).without({7, 2}), PCCD::Invalid_input);
+}
 
 TEMPLATE_TEST_CASE("kd-tree queries equal brute force", "[point_cloud]", float, double)
 {

@@ -204,6 +204,9 @@ private:
         Scan_estimate scan;
         scan.input_points = cloud.size();
         std::optional<Local_spacing> spacing = Base::outlier_stage(cloud, given_normals, input_index, options, scan, timings);
+        // The spacing's neighbour lists are the orientation graph's when they have its k.
+        const std::size_t graph_k = internal::orientation_graph_k(options.orientation_neighbors, cloud.size());
+        if (spacing && spacing->k != graph_k) std::vector<std::uint32_t>().swap(spacing->neighbors);
         internal::Stage_timer radius_stage(options, Preprocessing_stage::sampling_radius, cloud.size());
         const double r = PCCD::sampling_radius(cloud, options.sampling_radius);
         timings.sampling_radius = radius_stage.finish();
@@ -223,16 +226,19 @@ private:
         }
         estimate.residuals.resize(0); // the noise estimate is all they were for
 
-        // The domain radii from the local spacing, which goes with them.
+        // The domain radii from the local spacing.
         Eigen::VectorXd domain = Base::domain_stage(cloud, spacing, options, timings);
-        spacing.reset();
 
-        // The normals are oriented over a bare symmetric k-NN graph, which goes.
+        // The normals are oriented over a bare symmetric k-NN graph (from the spacing's lists when
+        // it kept them), which goes, and the spacing with it.
         Orientation_report orientation;
         {
             internal::Stage_timer stage(options, Preprocessing_stage::graph, cloud.size());
             const internal::Orientation_graph graph =
-                internal::knn_orientation_graph(cloud, options.orientation_neighbors, options.knn.threads);
+                spacing && !spacing->neighbors.empty()
+                    ? internal::knn_orientation_graph(spacing->neighbors, graph_k, cloud.size())
+                    : internal::knn_orientation_graph(cloud, options.orientation_neighbors, options.knn.threads);
+            spacing.reset();
             timings.graph = stage.finish();
             internal::Stage_timer orientation_stage(options, Preprocessing_stage::orientation, cloud.size());
             orientation = given_normals

@@ -21,6 +21,7 @@
 
 #include <PCCD/Error.h>
 #include <PCCD/internal/finite.h>
+#include <PCCD/internal/removal.h>
 
 namespace PCCD {
 
@@ -123,6 +124,50 @@ public:
     {
     }
 
+    /// The tree of the points left when the points `removed` (sorted indices, each once) are taken
+    /// out, the others keeping their order (point i becomes i minus the number removed before it).
+    /// No rebuild: the removed points are dropped from their leaves and the others renumbered, in
+    /// one pass over the leaves; the inner nodes keep their cuts, which still separate the points
+    /// left, so every query answers exactly as on a tree built afresh on them (results are unique:
+    /// ties go by index). This tree is moved from. O(N), against O(N log N) for a build (the
+    /// outliers of a 10^7-point scan: about 0.3 s instead of 7 s).
+    /// \throws Invalid_input if `removed` is not sorted, repeats an index or holds one >= size().
+    Kd_tree without(const std::vector<Index>& removed) &&
+    {
+        const std::size_t n = size();
+        const std::vector<Index> renumbered = internal::renumber_without(n, removed, "kd-tree");
+        constexpr Index gone = internal::removed_point;
+        const Index next_index = Index(n - removed.size());
+        Kd_tree result(std::move(*this));
+        Impl& impl = *result.m_impl;
+        Coordinates kept(3, Eigen::Index(next_index));
+        for (std::size_t i = 0; i < n; ++i)
+            if (renumbered[i] != gone) kept.col(Eigen::Index(renumbered[i])) = impl.coords.col(Eigen::Index(i));
+        impl.coords = std::move(kept); // the dataset refers to this member, which stays in place
+        Index_type& index = impl.index;
+        if (index.root_node) {
+            // Each leaf keeps its points left, renumbered, at the front of its range.
+            std::vector<typename Index_type::NodePtr> stack{index.root_node};
+            while (!stack.empty()) {
+                const typename Index_type::NodePtr node = stack.back();
+                stack.pop_back();
+                if (node->child1 || node->child2) {
+                    if (node->child1) stack.push_back(node->child1);
+                    if (node->child2) stack.push_back(node->child2);
+                    continue;
+                }
+                auto& leaf = node->node_type.lr;
+                auto write = leaf.left;
+                for (auto i = leaf.left; i < leaf.right; ++i)
+                    if (const Index to = renumbered[index.vAcc[i]]; to != gone) index.vAcc[write++] = to;
+                leaf.right = write;
+            }
+        }
+        index.m_size = next_index;
+        index.m_size_at_index_build = next_index;
+        return result;
+    }
+
     std::size_t size() const { return static_cast<std::size_t>(m_impl->coords.cols()); }
     const Coordinates& coordinates() const { return m_impl->coords; }
     /// Heap bytes held by the tree: its copy of the coordinates (3 N FT), the index's permutation
@@ -178,7 +223,9 @@ public:
         if (size() == 0) return;
         internal::Radius_result_set<FT> results(out, radius * radius);
         m_impl->index.findNeighbors(results, query.data(), nanoflann::SearchParams());
-        std::sort(out.begin(), out.end(), internal::neighbor_less<FT>);
+        // A lambda, not the function's address: the sort inlines it (through a function pointer
+        // the comparisons were an eighth of a 10^7-point object's preprocessing).
+        std::sort(out.begin(), out.end(), [](const Result& a, const Result& b) { return internal::neighbor_less(a, b); });
     }
 
     /// Convenience overload returning a new vector.

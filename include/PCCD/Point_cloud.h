@@ -75,9 +75,18 @@ public:
     /// Takes a 3 x N matrix of coordinates, one point per column.
     /// \throws Invalid_input as above.
     explicit Point_cloud(Coordinates coordinates, const K& kernel = K())
-        : m_data(std::make_shared<const Data>(checked(std::move(coordinates)), kernel))
+        : m_data(std::make_shared<Data>(checked(std::move(coordinates)), kernel))
     {
     }
+
+    /// The points of `cloud` left when the points `removed` (sorted indices, each once) are taken
+    /// out, in their order (point i becomes i minus the number removed before it). When `cloud` is
+    /// the only holder of its points (no copy of it is alive), its kd-tree is kept without them
+    /// (Kd_tree::without(), O(N)); otherwise a tree is built (O(N log N)). Queries answer as on a
+    /// cloud made afresh of the points left. `cloud` is moved from.
+    /// \throws Invalid_input if `removed` is not sorted, repeats an index, holds one >= size() or
+    /// removes every point (`cloud` is then moved from all the same).
+    Point_cloud(Point_cloud&& cloud, const std::vector<Index>& removed) : m_data(without(std::move(cloud), removed)) {}
     /// @}
 
     /// The checked 3 x N coordinates of the points of `items` (through `point_map`), in their order,
@@ -168,12 +177,28 @@ public:
     }
 
 private:
+    // Made non-const (make_shared<Data>) and held as const: the constructor that removes points
+    // may take the tree of a Data it alone holds.
     struct Data {
         Kd_tree<FT> tree;
         Bbox_3 bbox;
         K kernel;
         Data(Coordinates c, const K& k) : tree(std::move(c)), bbox(compute_bbox(tree.coordinates())), kernel(k) {}
+        Data(Kd_tree<FT> t, const K& k) : tree(std::move(t)), bbox(compute_bbox(tree.coordinates())), kernel(k) {}
     };
+
+    static std::shared_ptr<const Data> without(Point_cloud&& cloud, const std::vector<Index>& removed)
+    {
+        std::shared_ptr<const Data> data = std::move(cloud.m_data);
+        if (removed.size() >= data->tree.size())
+            throw Invalid_input(internal::concat("point cloud: removing ", removed.size(), " of its ", data->tree.size(),
+                                                 " points leaves none"));
+        if (data.use_count() == 1) {
+            Data& owned = const_cast<Data&>(*data); // not a const object (see Data)
+            return std::make_shared<Data>(std::move(owned.tree).without(removed), owned.kernel);
+        }
+        return std::make_shared<Data>(Kd_tree<FT>(data->tree.coordinates()).without(removed), data->kernel);
+    }
 
     static Bbox_3 compute_bbox(const Coordinates& c)
     {

@@ -365,8 +365,9 @@ private:
     static void remove_outliers(Point_cloud<K>& cloud, std::optional<Eigen::Matrix3Xd>& given_normals,
                                 std::vector<std::uint32_t>& input_index, std::vector<std::uint32_t>& outliers);
     /// The outlier stage (Outlier_options): finds and removes the isolated outliers (scan.outliers,
-    /// timings.outliers); returns the local spacing it measured when the cloud did not change, for
-    /// the domain radii.
+    /// timings.outliers); returns the local spacing of the cloud left, with its neighbour lists
+    /// (local_spacing_without() after a removal), for the domain radii and the lean object's
+    /// orientation graph; none when outlier removal is off.
     static std::optional<Local_spacing> outlier_stage(Point_cloud<K>& cloud, std::optional<Eigen::Matrix3Xd>& given_normals,
                                                       std::vector<std::uint32_t>& input_index,
                                                       const Point_cloud_object_options& options, Scan_estimate& scan,

@@ -55,12 +55,14 @@ void Point_cloud_object<K>::remove_outliers(Point_cloud<K>& cloud, std::optional
     std::size_t skip = 0;
     for (std::uint32_t i = 0; i < cloud.size(); ++i) {
         if (skip < outliers.size() && outliers[skip] == i) {
-            outliers[skip++] = input_index[i];
+            ++skip;
             continue;
         }
         kept.push_back(i);
     }
-    cloud = Point_cloud<K>(internal::gather_columns(cloud.coordinates(), kept));
+    // The cloud keeps its kd-tree, without the outliers (no second build).
+    cloud = Point_cloud<K>(std::move(cloud), outliers);
+    for (std::uint32_t& o : outliers) o = input_index[o];
     if (given_normals) given_normals = internal::gather_columns(*given_normals, kept);
     for (std::size_t k = 0; k < kept.size(); ++k) kept[k] = input_index[kept[k]];
     input_index = std::move(kept);
@@ -116,8 +118,13 @@ std::optional<Local_spacing> Point_cloud_object<K>::outlier_stage(Point_cloud<K>
     if (options.outliers.remove) {
         spacing = local_spacing(cloud, options.outliers.neighbors, true, options.outliers.threads);
         scan.outliers = find_outliers(*spacing, options.outliers);
-        remove_outliers(cloud, given_normals, input_index, scan.outliers);
-        if (!scan.outliers.empty()) spacing.reset(); // the cloud changed
+        if (!scan.outliers.empty()) {
+            const std::vector<std::uint32_t> removed = scan.outliers; // indices into the cloud, sorted
+            remove_outliers(cloud, given_normals, input_index, scan.outliers);
+            // The same spacing as computed afresh on the cloud left, querying only the points
+            // that lost a neighbour.
+            spacing = local_spacing_without(*spacing, removed, cloud, options.outliers.threads);
+        }
     }
     timings.outliers = stage.finish();
     return spacing;
@@ -192,7 +199,8 @@ auto Point_cloud_object<K>::preprocess(Timed_cloud built, std::optional<Eigen::M
     scan.input_points = cloud.size();
     // One local-spacing pass serves the outlier test and, when no point was removed and both
     // use the same k, the domain radii below.
-    const std::optional<Local_spacing> spacing = outlier_stage(cloud, given_normals, input_index, options, scan, timings);
+    std::optional<Local_spacing> spacing = outlier_stage(cloud, given_normals, input_index, options, scan, timings);
+    if (spacing) std::vector<std::uint32_t>().swap(spacing->neighbors); // the domain needs only the values
 
     std::shared_ptr<const Proximity_graph> graph;
     {

@@ -16,6 +16,7 @@
 #include <PCCD/Surface/Euclidean_distance.h>
 #include <PCCD/Surface/bandwidth.h>
 #include <PCCD/Surface/estimate_normals.h>
+#include <PCCD/Surface/internal/knn_orientation_graph.h>
 #include <PCCD/Surface/local_spacing.h>
 #include <PCCD/Surface/outliers.h>
 #include <PCCD/Surface/surface_domain.h>
@@ -264,6 +265,120 @@ TEST_CASE("local spacing is the k-th nearest other point's distance, with the k 
     CHECK_THROWS_AS(PCCD::local_spacing(cloud, 0), PCCD::Invalid_input);
     CHECK_THROWS_AS(PCCD::local_spacing(PCCD::Point_cloud<>(std::vector<Eigen::Vector3d>{{0, 0, 0}}), 1),
                     PCCD::Invalid_input);
+}
+
+TEST_CASE("local_spacing_without is the spacing of the points left, measured afresh", "[surface]")
+{
+    // 200 random points plus 8 more copies of one and 2 of another, then points taken out: a few
+    // scattered ones, copies of the duplicated points (whose lists tie at distance 0), the
+    // neighbours of one point, and the outliers of a sphere.
+    PCCD::Random_engine engine(521);
+    std::vector<Eigen::Vector3d> pts;
+    for (int i = 0; i < 200; ++i)
+        pts.emplace_back(PCCD::uniform_01(engine), PCCD::uniform_01(engine), PCCD::uniform_01(engine));
+    for (int c = 0; c < 8; ++c) pts.push_back(pts[30]);
+    for (int c = 0; c < 2; ++c) pts.push_back(pts[40]);
+    const PCCD::Point_cloud<> cloud(pts);
+    const std::size_t n = pts.size();
+
+    const auto check = [&](const PCCD::Point_cloud<>& from, unsigned k, std::vector<std::uint32_t> removed) {
+        std::sort(removed.begin(), removed.end());
+        removed.erase(std::unique(removed.begin(), removed.end()), removed.end());
+        std::vector<Eigen::Vector3d> left;
+        for (std::uint32_t i = 0, r = 0; i < from.size(); ++i) {
+            if (r < removed.size() && removed[r] == i) {
+                ++r;
+                continue;
+            }
+            left.push_back(from.position(i));
+        }
+        const PCCD::Point_cloud<> remaining(left);
+        const PCCD::Local_spacing before = PCCD::local_spacing(from, k, true);
+        const PCCD::Local_spacing after = PCCD::local_spacing_without(before, removed, remaining, 1);
+        // Against brute force on the points left: the lists exactly (ties by index), the values.
+        const Eigen::Matrix3Xd p = coordinates(remaining);
+        const Knn_table brute = brute_knn(p, after.k);
+        REQUIRE(after.k == std::min<std::size_t>(k, left.size() - 1));
+        REQUIRE(std::size_t(after.spacing.size()) == left.size());
+        REQUIRE(after.neighbors == brute.index);
+        for (std::size_t i = 0; i < left.size(); ++i)
+            CHECK(after.spacing(Eigen::Index(i)) == Approx(brute.at(i, after.k - 1)).epsilon(1e-12).margin(1e-15));
+        // And exactly what local_spacing() gives on them, with any number of threads.
+        const PCCD::Local_spacing fresh = PCCD::local_spacing(remaining, k, true);
+        CHECK(after.spacing == fresh.spacing);
+        CHECK(after.neighbors == fresh.neighbors);
+        CHECK(PCCD::local_spacing_without(before, removed, remaining).spacing == fresh.spacing);
+    };
+    for (unsigned k : {1u, 3u, 6u}) {
+        INFO("k = " << k);
+        check(cloud, k, {});
+        check(cloud, k, {0, 17, 99, 150, 199});
+        check(cloud, k, {30, 201, 203, 205});                     // copies of the 9-fold point
+        check(cloud, k, {40, 208});                               // two of the triple
+        check(cloud, k, {std::uint32_t(n - 1), std::uint32_t(n - 2)}); // the last points
+        const PCCD::Local_spacing s = PCCD::local_spacing(cloud, k, true);
+        check(cloud, k, std::vector<std::uint32_t>(s.neighbors.begin() + 5 * k, s.neighbors.begin() + 6 * k));
+    }
+    // The outliers of a sphere, as the objects remove them.
+    const Cloud_with_outliers c = sphere_with_outliers(3000, 20, 0.0, 604);
+    const PCCD::Point_cloud<> sphere(c.points);
+    check(sphere, 6, PCCD::find_outliers(sphere));
+    // Down to k + 1 points and below: k shrinks, every point is measured again.
+    const std::vector<Eigen::Vector3d> five{{0, 0, 0}, {1, 0, 0}, {0, 2, 0}, {0, 0, 3}, {4, 0, 0}};
+    check(PCCD::Point_cloud<>(five), 3, {1, 2});
+
+    // Misuse: no lists, unsorted or repeated or out-of-range removals, a cloud of the wrong size.
+    const PCCD::Local_spacing values = PCCD::local_spacing(cloud, 3, false);
+    const PCCD::Local_spacing lists = PCCD::local_spacing(cloud, 3, true);
+    std::vector<Eigen::Vector3d> minus_two(pts.begin() + 2, pts.end());
+    const PCCD::Point_cloud<> smaller(minus_two);
+    CHECK_THROWS_AS(PCCD::local_spacing_without(values, {0, 1}, smaller), PCCD::Invalid_input);
+    CHECK_THROWS_AS(PCCD::local_spacing_without(lists, {1, 0}, smaller), PCCD::Invalid_input);
+    CHECK_THROWS_AS(PCCD::local_spacing_without(lists, {1, 1}, smaller), PCCD::Invalid_input);
+    CHECK_THROWS_AS(PCCD::local_spacing_without(lists, {0, std::uint32_t(n)}, smaller), PCCD::Invalid_input);
+    CHECK_THROWS_AS(PCCD::local_spacing_without(lists, {0}, smaller), PCCD::Invalid_input);
+    CHECK_NOTHROW(PCCD::local_spacing_without(lists, {0, 1}, smaller));
+}
+
+TEST_CASE("the orientation graph of k-NN lists holds each pair once each way", "[surface]")
+{
+    // Random points (no ties): point v's out-edges are its k nearest and the points that have v
+    // among theirs (brute force), each once; the graph from the cloud is the same.
+    PCCD::Random_engine engine(531);
+    std::vector<Eigen::Vector3d> pts;
+    for (int i = 0; i < 300; ++i)
+        pts.emplace_back(PCCD::uniform_01(engine), PCCD::uniform_01(engine), 0.1 * PCCD::uniform_01(engine));
+    const PCCD::Point_cloud<> cloud(pts);
+    const std::size_t n = pts.size();
+    for (unsigned k : {1u, 4u, 6u}) {
+        INFO("k = " << k);
+        const Knn_table brute = brute_knn(coordinates(cloud), k);
+        std::vector<std::set<std::uint32_t>> expected(n);
+        for (std::size_t i = 0; i < n; ++i)
+            for (unsigned m = 0; m < k; ++m) {
+                expected[i].insert(brute.neighbor(i, m));
+                expected[brute.neighbor(i, m)].insert(std::uint32_t(i));
+            }
+        const PCCD::Local_spacing spacing = PCCD::local_spacing(cloud, k, true);
+        const PCCD::internal::Orientation_graph from_lists = PCCD::internal::knn_orientation_graph(spacing.neighbors, k, n);
+        const PCCD::internal::Orientation_graph from_cloud = PCCD::internal::knn_orientation_graph(cloud, k, 1);
+        std::size_t pairs = 0;
+        for (std::size_t v = 0; v < n; ++v) {
+            INFO("vertex " << v);
+            for (const auto* g : {&from_lists, &from_cloud}) {
+                std::vector<std::uint32_t> out;
+                for (auto [e, end] = out_edges(std::uint32_t(v), *g); e != end; ++e) out.push_back(target(*e, *g));
+                std::sort(out.begin(), out.end());
+                CHECK(std::adjacent_find(out.begin(), out.end()) == out.end()); // no pair twice
+                CHECK(out == std::vector<std::uint32_t>(expected[v].begin(), expected[v].end()));
+            }
+            pairs += expected[v].size();
+        }
+        CHECK(num_edges(from_lists) == pairs);
+        CHECK(pairs < 2 * k * n); // pairs found from both ends are stored once each way
+    }
+    CHECK_THROWS_AS(PCCD::internal::knn_orientation_graph(std::vector<std::uint32_t>(5), 2, 3), PCCD::Invalid_input);
+    CHECK_THROWS_AS(PCCD::internal::knn_orientation_graph(std::vector<std::uint32_t>{}, 0, 3), PCCD::Invalid_input);
 }
 
 // ---------------------------------------------------------------------------------------------------

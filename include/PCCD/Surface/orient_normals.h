@@ -158,7 +158,8 @@ void propagate_signs(const Graph& g, const Eigen::MatrixBase<Positions>& positio
         return positions.col(w).template cast<double>() - positions.col(v).template cast<double>();
     };
 
-    // One connected component at a time, from its smallest index: first its members (breadth-first),
+    // One connected component at a time, from its smallest index: first, when any point has a hint,
+    // its members (breadth-first),
     // then a minimum spanning forest for orientation_edge_weight() grown by Prim's algorithm from all its
     // hinted points at once, or, without hints, from its smallest index. The heap holds candidate
     // tree edges (weight, vertex, parent); the smallest weight, then the smallest vertex index, then
@@ -169,7 +170,7 @@ void propagate_signs(const Graph& g, const Eigen::MatrixBase<Positions>& positio
     // frontier grows wide and the heap's cache misses were most of the orientation's time).
     using Candidate = std::tuple<double, std::uint32_t, std::uint32_t>;
     std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> heap;
-    std::vector<char> seen(n, 0), in_tree(n, 0);
+    std::vector<char> seen, in_tree(n, 0);
     std::vector<double> lightest(n, std::numeric_limits<double>::infinity());
     std::vector<std::uint32_t> members, hinted, order;
     const auto push_edges = [&](std::uint32_t v) {
@@ -183,21 +184,27 @@ void propagate_signs(const Graph& g, const Eigen::MatrixBase<Positions>& positio
             heap.emplace(weight, w, v);
         }
     };
+    // Without any hint, a component's members are the vertices its tree reaches (in_tree): no
+    // breadth-first pass is needed.
+    const bool any_hint = std::any_of(has_hint.begin(), has_hint.end(), [](char h) { return h != 0; });
+    if (any_hint) seen.assign(n, 0);
     for (std::size_t root = 0; root < n; ++root) {
-        if (seen[root] || !has_normal[root]) continue;
-        members.assign(1, std::uint32_t(root));
-        seen[root] = 1;
-        for (std::size_t next = 0; next < members.size(); ++next)
-            for (auto [e, e_end] = out_edges(members[next], g); e != e_end; ++e) {
-                const std::uint32_t w = followed(*e, members[next]);
-                if (seen[w] || !has_normal[w]) continue;
-                seen[w] = 1;
-                members.push_back(w);
-            }
+        if ((any_hint && seen[root]) || in_tree[root] || !has_normal[root]) continue;
         hinted.clear();
-        for (const std::uint32_t v : members)
-            if (has_hint[v]) hinted.push_back(v);
-        if (hinted.size() == members.size()) continue; // every sign is given: no tree to grow
+        if (any_hint) {
+            members.assign(1, std::uint32_t(root));
+            seen[root] = 1;
+            for (std::size_t next = 0; next < members.size(); ++next)
+                for (auto [e, e_end] = out_edges(members[next], g); e != e_end; ++e) {
+                    const std::uint32_t w = followed(*e, members[next]);
+                    if (seen[w] || !has_normal[w]) continue;
+                    seen[w] = 1;
+                    members.push_back(w);
+                }
+            for (const std::uint32_t v : members)
+                if (has_hint[v]) hinted.push_back(v);
+            if (hinted.size() == members.size()) continue; // every sign is given: no tree to grow
+        }
         ++report.components;
         std::sort(hinted.begin(), hinted.end());
         order.clear();
