@@ -129,8 +129,8 @@ public:
     /// No rebuild: the removed points are dropped from their leaves and the others renumbered, in
     /// one pass over the leaves; the inner nodes keep their cuts, which still separate the points
     /// left, so every query answers exactly as on a tree built afresh on them (results are unique:
-    /// ties go by index). This tree is moved from. O(N), against O(N log N) for a build (the
-    /// outliers of a 10^7-point scan: about 0.3 s instead of 7 s).
+    /// ties go by index). This tree is moved from. O(N), against O(N log N) for a build (removing
+    /// the 20 outliers of a 10^7-point scan this way took its outlier stage from 9.7 to 8.3 s).
     /// \throws Invalid_input if `removed` is not sorted, repeats an index or holds one >= size().
     Kd_tree without(const std::vector<Index>& removed) &&
     {
@@ -224,7 +224,7 @@ public:
         internal::Radius_result_set<FT> results(out, radius * radius);
         m_impl->index.findNeighbors(results, query.data(), nanoflann::SearchParams());
         // A lambda, not the function's address: the sort inlines it (through a function pointer
-        // the comparisons were an eighth of a 10^7-point object's preprocessing).
+        // the comparisons were a tenth of a profile of a 10^7-point object's preprocessing).
         std::sort(out.begin(), out.end(), [](const Result& a, const Result& b) { return internal::neighbor_less(a, b); });
     }
 

@@ -197,8 +197,8 @@ auto Point_cloud_object<K>::preprocess(Timed_cloud built, std::optional<Eigen::M
     options = resolve_threads(std::move(options));
     Scan_estimate scan;
     scan.input_points = cloud.size();
-    // One local-spacing pass serves the outlier test and, when no point was removed and both
-    // use the same k, the domain radii below.
+    // One local-spacing pass serves the outlier test and, when both use the same k, the domain
+    // radii below (after a removal, the spacing of the points left: local_spacing_without()).
     std::optional<Local_spacing> spacing = outlier_stage(cloud, given_normals, input_index, options, scan, timings);
     if (spacing) std::vector<std::uint32_t>().swap(spacing->neighbors); // the domain needs only the values
 

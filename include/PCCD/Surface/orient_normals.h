@@ -158,10 +158,10 @@ void propagate_signs(const Graph& g, const Eigen::MatrixBase<Positions>& positio
         return positions.col(w).template cast<double>() - positions.col(v).template cast<double>();
     };
 
-    // One connected component at a time, from its smallest index: first, when any point has a hint,
-    // its members (breadth-first),
-    // then a minimum spanning forest for orientation_edge_weight() grown by Prim's algorithm from all its
-    // hinted points at once, or, without hints, from its smallest index. The heap holds candidate
+    // One connected component at a time, from its smallest index: first, when any point has a
+    // hint, its members (breadth-first), then a minimum spanning forest for
+    // orientation_edge_weight() grown by Prim's algorithm from all its hinted points at once, or,
+    // without hints, from its smallest index. The heap holds candidate
     // tree edges (weight, vertex, parent); the smallest weight, then the smallest vertex index, then
     // the smallest parent index, is taken first.
     // A candidate heavier than one already in the heap for the same vertex is never taken first, so
