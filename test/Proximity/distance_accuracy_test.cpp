@@ -13,7 +13,8 @@
 // Prints one row per model and cloud, then asserts what must hold (per row: the status is
 // do_intersect()'s on every non-grazing pose, the witnesses lie on their surfaces, the distance
 // exceeds exact + |f_A| + |f_B| at the mesh's closest points by a median <= 0.25 s; over all rows: the exact
-// distance lies in the widened interval on >= 99.5 % of the poses), and prints the acceptance
+// distance lies in the widened interval on >= 99.5 % of the poses, and the median over the eight
+// models of the clean area clouds' median error is <= 0.4 s), and prints the acceptance
 // figures below as met or missed without asserting them (the surfaces' offset at protrusions and the
 // depth's inside test on thin parts miss some; doc/benchmarks.md):
 // - separate poses with exact distance >= 1 s: |distance - exact| median <= 0.1 s (clean), 0.25 s
@@ -448,11 +449,13 @@ int main()
         separate += rows[i].distance_errors.size();
     }
     // The sharp-feature surface (IMLS): the status is still do_intersect()'s on every non-grazing
-    // pose, and on the clean area clouds its distance error is well below the default surface's
-    // (measured 0.30-0.56 times the default's median on the eight models; asserted <= 0.7 times).
-    // Its interval is printed, not asserted: the IMLS lies a little outside the points on convex
-    // parts, so the true distance can exceed upper_bound, which bounds the implicit surfaces'
-    // distance (doc/manual/surface.md, "Sharp features").
+    // pose, and where the default surface rounds sharp edges most (its median error on the clean
+    // area cloud above 0.5 s: the anchor and the fandisk, 0.92 and 1.16 s) its distance error is
+    // well below the default surface's (measured 0.27 and 0.29 times; asserted <= 0.7 times). On
+    // smooth parts it is not: it lies a little outside the points on convex parts, and the
+    // witnesses find that (bunny 0.31 s against 0.14 s). Its interval is printed, not asserted:
+    // the true distance can exceed upper_bound, which bounds the implicit surfaces' distance
+    // (doc/manual/surface.md, "Sharp features").
     for (std::size_t i = 0; i < rows.size(); ++i) {
         if (!sharp[i]) continue;
         const Row& r = rows[i];
@@ -462,12 +465,30 @@ int main()
                   std::to_string(r.status_poses) + " differ");
         if (noisy[i]) continue;
         for (std::size_t j = 0; j < rows.size(); ++j)
-            if (!sharp[j] && !noisy[j] && rows[j].model == r.model && rows[j].cloud == "area") {
+            if (!sharp[j] && !noisy[j] && rows[j].model == r.model && rows[j].cloud == "area" &&
+                median_of(rows[j].distance_errors) > 0.5) {
                 char line[200];
                 std::snprintf(line, sizeof line, "distance error median %.3f s <= 0.7 x the default surface's %.3f s",
                               median_of(r.distance_errors), median_of(rows[j].distance_errors));
                 check(median_of(r.distance_errors) <= 0.7 * median_of(rows[j].distance_errors), name + line);
             }
+    }
+    // The witnesses reach the surfaces' closest points, edges included: over the models' clean area
+    // clouds (default surface), the median of the per-model median errors is at most 0.4 s
+    // (measured 0.29 s; 0.55 s when the refinement's step did not back off at an edge). Asserted
+    // on the eight models of the Release run; the smoke version's two are printed only.
+    {
+        std::vector<double> medians;
+        for (std::size_t i = 0; i < rows.size(); ++i)
+            if (!sharp[i] && !noisy[i] && rows[i].cloud == "area" && !rows[i].distance_errors.empty())
+                medians.push_back(median_of(rows[i].distance_errors));
+        char line[200];
+        std::snprintf(line, sizeof line, "median over %zu models of the clean area clouds' median distance error: %.3f s <= 0.4 s",
+                      medians.size(), medians.empty() ? 0.0 : median_of(medians));
+        if (medians.size() >= 8)
+            check(median_of(medians) <= 0.4, line);
+        else
+            std::printf("(not asserted on %zu models) %s\n", medians.size(), line);
     }
     std::printf("sharp-feature surface: exact distance in [lower - 0.5 s, upper + 0.5 s] on %zu of %zu separate poses "
                 "(not asserted)\n",

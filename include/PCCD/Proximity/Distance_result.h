@@ -77,8 +77,9 @@ struct Distance_result {
     /// budget stopped it. With Distance_options::certified_lower_bound it is certified: the
     /// smallest point pair distance minus both points' domain radii (capped by the support
     /// radius; f is defined nowhere else). The upper bound is the distance of the witness points
-    /// (on the surfaces) plus their |f|. 0 and 0 for intersecting poses; 0 and +infinity before
-    /// anything is known.
+    /// (on the surfaces) plus their |f| plus twice both objects' estimated noise (a noisy sample's
+    /// implicit surface may bulge towards the other object by about that much). 0 and 0 for
+    /// intersecting poses; 0 and +infinity before anything is known.
     double lower_bound = 0.0;
     double upper_bound = std::numeric_limits<double>::infinity();
     /// Separate: the closest points found on surface A and surface B, and the surfaces' unit

@@ -246,7 +246,11 @@ Distance_result run_distance(const A& a, const Rigid_transform_3<double>& pose_a
         r.normal_a = best->a.normal;
         r.normal_b = best->b.normal;
         r.distance = best->distance();
-        r.upper_bound = r.distance + std::abs(best->a.f) + std::abs(best->b.f);
+        // The witnesses lie within |f| of their surfaces; a noisy sample's surface may bulge towards
+        // the other object by up to about twice the noise, so the sampled surfaces may lie that
+        // much farther apart.
+        r.upper_bound = r.distance + std::abs(best->a.f) + std::abs(best->b.f) +
+                        2.0 * (q.pa.noise_estimate() + q.pb.noise_estimate());
     }
     r.lower_bound = std::min(r.lower_bound, r.distance);
     if (r.distance > 0.0) r.contact_normal = (r.point_b - r.point_a) / r.distance;

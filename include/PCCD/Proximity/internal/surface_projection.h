@@ -48,6 +48,9 @@ struct Surface_point {
     Eigen::Vector3d x;
     Eigen::Vector3d normal;
     double f;
+    /// |x - p*| / D_{p*} at x (Surface_evaluation::domain_fraction): 0 at a cloud point, 1 at the
+    /// edge of the surface's domain.
+    double domain_fraction = 0.0;
 };
 
 /// Newton steps x <- x - f(x) n(x) from the world point x onto the surface of `o` until |f| <=
@@ -63,7 +66,7 @@ std::optional<Surface_point> project_onto_surface(const Posed_object<Object>& o,
         const Surface_evaluation e = state.evaluate(o, x);
         if (!e.defined()) return std::nullopt;
         const Eigen::Vector3d n = o.to_world.rotation() * e.normal;
-        if (std::abs(e.value) <= tolerance) return Surface_point{x, n, e.value};
+        if (std::abs(e.value) <= tolerance) return Surface_point{x, n, e.value, e.domain_fraction};
         if (k == steps || std::abs(e.value) > max_step) return std::nullopt;
         x -= e.value * n;
         ++state.counters.refinement_steps;
@@ -71,10 +74,23 @@ std::optional<Surface_point> project_onto_surface(const Posed_object<Object>& o,
     return std::nullopt;
 }
 
+/// How far from its samples a witness may go: the refinement accepts a surface point only where
+/// Surface_evaluation::domain_fraction <= this, i.e. within 0.3 times the domain radius D_{p*}
+/// (about 0.8 mean spacings on a uniform sample) of its nearest cloud point. The zero set farther
+/// out, still inside the domain, holds sheets the fit makes beside sharp edges and noise (seen 1.2
+/// spacings outside a sampled bar's edge); doc/benchmarks.md "Witnesses that reach the edges".
+inline constexpr double witness_domain_fraction = 0.3;
+/// Halvings of a refinement step that overshoots (fails to project, leaves the region above, or
+/// does not bring the point closer) before the refinement gives up at that point.
+inline constexpr int witness_step_halvings = 4;
+
 /// The point of the surface of `o` closest to the world point z, from the surface point `from`
 /// nearby: z projected onto the tangent plane at `from` (a step of at most `max_step` along it),
-/// then onto the surface; repeated while the foot moves by more than `tolerance` (at most `rounds`
-/// times). Returns the last surface point reached (`from` itself when the first step fails).
+/// then onto the surface; a step that fails to project, lands farther than
+/// witness_domain_fraction of the domain from the samples, or does not bring the point closer to
+/// z is halved (at most witness_step_halvings times): on a curved surface, beside an edge, the
+/// tangent-plane step overshoots. Repeated while the foot moves by more than `tolerance` (at most
+/// `rounds` times). Returns the last surface point reached (`from` itself when no step succeeds).
 template <class Object>
 Surface_point closest_on_surface(const Posed_object<Object>& o, const Eigen::Vector3d& z, Surface_point from,
                                  double tolerance, double max_step, Proximity_state& state, int rounds = 3)
@@ -84,7 +100,13 @@ Surface_point closest_on_surface(const Posed_object<Object>& o, const Eigen::Vec
         const double length = step.norm();
         if (length <= tolerance) break;
         if (length > max_step) step *= max_step / length;
-        const std::optional<Surface_point> next = project_onto_surface(o, from.x + step, tolerance, max_step, state);
+        const double before = (z - from.x).norm();
+        std::optional<Surface_point> next;
+        for (int h = 0; h <= witness_step_halvings && !next; ++h, step *= 0.5) {
+            if (h > 0 && step.norm() <= tolerance) break;
+            next = project_onto_surface(o, from.x + step, tolerance, max_step, state);
+            if (next && !(next->domain_fraction <= witness_domain_fraction && (z - next->x).norm() < before)) next.reset();
+        }
         if (!next) break;
         const bool small = (next->x - from.x).norm() <= tolerance;
         from = *next;
