@@ -32,7 +32,7 @@
 // never as passed. Release: 4 rotation pairs per distance, 52 poses per model and cloud (about
 // half of them count for the distance and a half for the depth) on the bunny, the elephant and six
 // CAD parts; Debug and sanitizer builds run a smoke version (elephant and anchor, 2 rotation pairs)
-// with the same bounds.
+// with the same bounds, but for the median over the models, which needs all eight and is printed only.
 #include "../build_helpers.h"
 #include <PCCD/Exact/mesh_distance.h>
 #include <PCCD/Proximity/distance.h>
