@@ -70,6 +70,10 @@ TEST_CASE("Lean object: the surface and normals of a sampled sphere", "[lean]")
     const Lean& a = s.a;
     REQUIRE(a.size() == 6000);
     CHECK(a.hierarchy().has_reach());
+    // The WLS evaluations' radius queries (at the support radius) come from the cloud's cell grid,
+    // at most 8 cells each: cells at least twice the support radius wide.
+    REQUIRE(a.cloud().kd_tree().cell_grid_side());
+    CHECK(*a.cloud().kd_tree().cell_grid_side() >= 2.0 * a.weight().support_radius());
     // Normals point outward (the analytic normal of a unit sphere at p is p).
     std::size_t outward = 0;
     for (std::uint32_t i = 0; i < a.size(); ++i)
@@ -276,6 +280,8 @@ TEST_CASE("Lean object: a saved object loads back identical and answers as it di
     CHECK(loaded.normals_given() == object.normals_given());
     pccd_test::require_same_hierarchy(loaded.hierarchy(), object.hierarchy());
     CHECK(loaded.memory_bytes() == object.memory_bytes());
+    REQUIRE(object.cloud().kd_tree().cell_grid_side());
+    CHECK(loaded.cloud().kd_tree().cell_grid_side() == object.cloud().kd_tree().cell_grid_side());
     for (const pccd_test::Query& q : pccd_test::queries_near(pccd_test::unit_sphere(), 100, 0.05, 3)) {
         const double x = loaded.surface().evaluate(q.x).value, y = object.surface().evaluate(q.x).value;
         CHECK((x == y || (std::isnan(x) && std::isnan(y)))); // NaN: undefined there, for both

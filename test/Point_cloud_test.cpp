@@ -274,3 +274,80 @@ TEST_CASE("a range of points with a kernel object needs no point map", "[point_c
     CHECK(with_kernel.size() == 4);
     CHECK(with_kernel.k_nearest(Eigen::Vector3d(0, 1.9, 0), 1).front().index == 2);
 }
+
+TEMPLATE_TEST_CASE("a cell grid answers radius queries as brute force", "[point_cloud]", float, double)
+{
+    // Kd_tree::lay_cell_grid: radius queries whose ball meets at most 27 cells come from the grid,
+    // the others from the tree; both must give brute force's points, distances and order. The
+    // "grid" family has integer coordinates, so with cells of side 1 (and 0.5) every point lies on
+    // cell faces and many distances tie with the radius exactly.
+    using Cloud = PCCD::Point_cloud<PCCD::Eigen_kernel<TestType>>;
+    using Vector = Eigen::Matrix<TestType, 3, 1>;
+    PCCD::Random_engine rng(77);
+    for (const char* kind : {"random", "planar", "collinear", "grid", "duplicated"}) {
+        const Coords<TestType> coords = make_cloud<TestType>(kind, 1500, rng);
+        for (const double cell : {0.05, 0.3, 0.5, 1.0}) {
+            INFO("input family " << kind << ", cells of side " << cell);
+            PCCD::Kd_tree<TestType> tree(coords);
+            REQUIRE(tree.lay_cell_grid(cell));
+            REQUIRE(tree.cell_grid_side() == cell);
+            std::vector<PCCD::Neighbor<TestType>> got;
+            for (int t = 0; t < 150; ++t) {
+                // At cloud points, at random positions, and outside the points' box.
+                Vector q = t % 3 == 0 ? Vector(coords.col(Eigen::Index(PCCD::uniform_index(rng, 1500))))
+                                      : Vector(make_cloud<TestType>("random", 1, rng).col(0));
+                if (t % 3 == 2) q *= TestType(3);
+                const auto all = brute_force_all(coords, q);
+                // Radii from 0 through cell / 2 (at most 8 cells) to 2 cells (the tree answers), and
+                // the exact distance of some point (a tie with the bound).
+                const TestType radius = t % 5 == 4 ? std::sqrt(all[std::size_t(t) % 40].squared_distance)
+                                                   : TestType(cell * 2.0 * PCCD::uniform_01(rng));
+                tree.within_radius(q, radius, got);
+                std::vector<PCCD::Neighbor<TestType>> expected;
+                for (const auto& nb : all)
+                    if (nb.squared_distance <= radius * radius) expected.push_back(nb);
+                REQUIRE(got == expected);
+            }
+        }
+    }
+    // The grid itself declines a ball meeting more than 27 cells, and answers one that misses the
+    // points' box with nothing.
+    const Coords<TestType> coords = make_cloud<TestType>("random", 500, rng);
+    const PCCD::internal::Cell_grid<TestType> grid(coords, 0.1);
+    std::vector<PCCD::Neighbor<TestType>> got;
+    CHECK_FALSE(grid.within_radius(coords, Vector(0.5, 0.5, 0.5), TestType(0.2), got));
+    CHECK(got.empty());
+    CHECK(grid.within_radius(coords, Vector(coords.col(0)), TestType(0.09), got));
+    CHECK_FALSE(got.empty()); // the point itself
+    got.clear();
+    CHECK(grid.within_radius(coords, Vector(5, 5, 5), TestType(0.09), got));
+    CHECK(got.empty());
+    CHECK(grid.memory_bytes() >= 500 * sizeof(std::uint32_t));
+
+    // Grids that cannot be laid: no grid, the tree answers.
+    PCCD::Kd_tree<TestType> tree(coords);
+    for (const double bad : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+                             1e-7 /* 10^7 cells along an axis: more than 2^21 */}) {
+        CHECK_FALSE(tree.lay_cell_grid(bad));
+        CHECK_FALSE(tree.cell_grid_side());
+    }
+    const std::size_t bare = tree.memory_bytes();
+    REQUIRE(tree.lay_cell_grid(0.1));
+    CHECK(tree.memory_bytes() >= bare + 500 * sizeof(std::uint32_t));
+    // Removing points drops the grid (its indices are the old ones); the tree still answers.
+    const PCCD::Kd_tree<TestType> fewer = std::move(tree).without({0, 1, 2});
+    CHECK_FALSE(fewer.cell_grid_side());
+
+    // Point_cloud::with_cell_grid, alone and with a copy alive (the copy keeps no grid).
+    for (const bool shared : {false, true}) {
+        Cloud cloud(coords);
+        std::vector<Cloud> copies; // one when a copy is alive
+        if (shared) copies.push_back(cloud);
+        const Cloud gridded = std::move(cloud).with_cell_grid(0.1);
+        CHECK(gridded.kd_tree().cell_grid_side() == 0.1);
+        check_queries<TestType>(gridded, coords, rng, 60);
+        for (const Cloud& copy : copies) CHECK_FALSE(copy.kd_tree().cell_grid_side());
+        Cloud plain(coords);
+        CHECK_FALSE(std::move(plain).with_cell_grid(0.0).kd_tree().cell_grid_side()); // none laid, still a cloud
+    }
+}

@@ -154,6 +154,12 @@ public:
     /// @}
 
 private:
+    /// The side of the cloud's cell grid (Point_cloud::with_cell_grid), in sampling radii: twice
+    /// the default support radius (3 r), so that the WLS evaluations' radius queries meet at most 8
+    /// cells (27 up to a support of 6 r); cells of one support radius were slower (doc/benchmarks.md,
+    /// "Radius queries from a cell grid").
+    static constexpr double cell_grid_side = 6.0;
+
     struct Data {
         Point_cloud<K> cloud;
         double sampling_radius;
@@ -209,6 +215,7 @@ private:
         if (spacing && spacing->k != graph_k) std::vector<std::uint32_t>().swap(spacing->neighbors);
         internal::Stage_timer radius_stage(options, Preprocessing_stage::sampling_radius, cloud.size());
         const double r = PCCD::sampling_radius(cloud, options.sampling_radius);
+        cloud = std::move(cloud).with_cell_grid(cell_grid_side * r);
         timings.sampling_radius = radius_stage.finish();
 
         // The kernel and the normals, with the Euclidean kernel (a second time when the noise asks

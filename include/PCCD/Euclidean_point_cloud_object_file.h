@@ -67,6 +67,7 @@ Euclidean_point_cloud_object<K> Euclidean_point_cloud_object<K>::load_file(const
             else
                 return Point_cloud<K>(Coordinates(parts.points.template cast<FT>()));
         }();
+        cloud = std::move(cloud).with_cell_grid(cell_grid_side * parts.r);
         parts.timings.kd_tree = internal::ms_since(start);
         parts.timings.outliers = 0.0; // read, not computed
         const Gaussian_weight weight(parts.h, parts.theta);
