@@ -40,5 +40,13 @@ int main()
     for (const auto& n : near)
         std::printf("neighbour %u (intensity %u) at distance %.4f\n", n.index, unsigned(scan[n.index].intensity),
                     std::sqrt(n.squared_distance));
+
+    // A grid of cubic cells answers the radius queries whose ball meets few cells: the same points
+    // as the kd-tree, by a few hash look-ups (faster in large clouds). Laid here on a copy, which
+    // then gets a kd-tree of its own, so that both can be asked.
+    const Cloud gridded = Cloud(cloud).with_cell_grid(0.1);
+    const Eigen::Vector3f centre(0.5f, 0.5f, 0.0f);
+    std::printf("%zu points within 0.05 from the grid, %zu from the tree\n", gridded.within_radius(centre, 0.05f).size(),
+                cloud.within_radius(centre, 0.05f).size());
     return 0;
 }
