@@ -322,6 +322,12 @@ TEMPLATE_TEST_CASE("a cell grid answers radius queries as brute force", "[point_
     got.clear();
     CHECK(grid.within_radius(coords, Vector(5, 5, 5), TestType(0.09), got));
     CHECK(got.empty());
+    // Far queries, beyond the integers the cells are counted in, and an infinite radius.
+    const TestType far = PCCD::Point_cloud<PCCD::Eigen_kernel<TestType>>::max_coordinate_magnitude();
+    CHECK(grid.within_radius(coords, Vector(far, -far, far), TestType(0.09), got));
+    CHECK(got.empty());
+    CHECK_FALSE(grid.within_radius(coords, Vector(far, 0, 0), std::numeric_limits<TestType>::infinity(), got));
+    CHECK(got.empty());
     CHECK(grid.memory_bytes() >= 500 * sizeof(std::uint32_t));
 
     // Grids that cannot be laid: no grid, the tree answers.

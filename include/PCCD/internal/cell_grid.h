@@ -99,12 +99,16 @@ public:
             // keeps every cell the ball meets (a cell too many costs a look-up, never a wrong answer).
             const double margin = 16.0 * double(std::numeric_limits<FT>::epsilon()) * (std::abs(q) + std::abs(m_lo[d]) + r) +
                                   1e-9 * m_cell;
-            from[d] = std::max<std::int64_t>(0, std::int64_t(std::floor((q - r - margin - m_lo[d]) * m_inverse)));
-            to[d] = std::min<std::int64_t>(m_cells[d] - 1, std::int64_t(std::floor((q + r + margin - m_lo[d]) * m_inverse)));
-            if (from[d] > to[d]) return true; // the ball misses the points' box
+            // Clamped to the grid in double first: far queries would overflow the integers.
+            const double last = double(m_cells[d] - 1);
+            const double low = std::floor((q - r - margin - m_lo[d]) * m_inverse);
+            const double high = std::floor((q + r + margin - m_lo[d]) * m_inverse);
+            if (high < 0.0 || low > last) return true; // the ball misses the points' box
+            from[d] = low < 0.0 ? 0 : std::int64_t(low);
+            to[d] = high > last ? m_cells[d] - 1 : std::int64_t(high);
             count *= to[d] - from[d] + 1;
+            if (count > most_cells) return false;
         }
-        if (count > most_cells) return false;
         const FT bound = radius * radius;
         for (std::int64_t z = from[2]; z <= to[2]; ++z)
             for (std::int64_t y = from[1]; y <= to[1]; ++y)
