@@ -15,6 +15,8 @@
 
 #include <Eigen/Core>
 
+#include <PCCD/internal/grid_cell.h>
+
 namespace PCCD::internal {
 
 /// Cells of side `cell()` over the points of a 3 x N coordinate matrix that the caller keeps alive
@@ -139,10 +141,8 @@ private:
         std::uint32_t first, count;
     };
 
-    static std::uint64_t key(std::int64_t x, std::int64_t y, std::int64_t z)
-    {
-        return std::uint64_t(x) | std::uint64_t(y) << 21 | std::uint64_t(z) << 42;
-    }
+    // Cells are counted from the points' box corner, so within [0, 2^21) per axis: no key wraps.
+    static std::uint64_t key(std::int64_t x, std::int64_t y, std::int64_t z) { return grid_key(Grid_cell{x, y, z}); }
     std::uint64_t key_of_point(const Coordinates& c, std::size_t i) const
     {
         std::int64_t cell[3];
