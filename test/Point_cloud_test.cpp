@@ -333,6 +333,7 @@ TEMPLATE_TEST_CASE("a cell grid answers radius queries as brute force", "[point_
     // Grids that cannot be laid: no grid, the tree answers.
     PCCD::Kd_tree<TestType> tree(coords);
     for (const double bad : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+                             std::numeric_limits<double>::denorm_min() /* subnormal: no finite inverse */,
                              1e-7 /* 10^7 cells along an axis: more than 2^21 */}) {
         CHECK_FALSE(tree.lay_cell_grid(bad));
         CHECK_FALSE(tree.cell_grid_side());

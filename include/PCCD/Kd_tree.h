@@ -177,7 +177,8 @@ public:
     /// tree, found by a few independent hash look-ups instead of a descent of the tree
     /// (doc/benchmarks.md, "Radius queries from a cell grid"). Other queries stay with the tree.
     /// Memory: 4 bytes per point and up to 43 bytes per non-empty cell. Returns false, laying none, when
-    /// `cell` is not finite and > 0 or the points' box spans 2^21 - 1 cells or more along an axis.
+    /// `cell` is not finite and normal (>= the smallest normal double) or the points' box spans
+    /// 2^21 - 1 cells or more along an axis.
     /// Not thread safe: lay the grid before the tree is shared. O(N) expected.
     bool lay_cell_grid(double cell)
     {

@@ -91,7 +91,7 @@ public:
     /// This cloud with a grid of cubic cells of side `cell` laid over its points
     /// (Kd_tree::lay_cell_grid()): radius queries whose ball meets few cells are answered from the
     /// grid, with the same results, faster in clouds too large for the caches. None is laid when
-    /// the grid would not fit (cell not finite and > 0, or 2^21 - 1 cells or more along an axis);
+    /// the grid would not fit (cell not finite and normal, or 2^21 - 1 cells or more along an axis);
     /// the cloud is then unchanged. When `*this` is the only holder of its points its kd-tree is
     /// kept; otherwise one is built (O(N log N)). `*this` is moved from. O(N) expected.
     Point_cloud with_cell_grid(double cell) &&

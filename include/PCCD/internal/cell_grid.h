@@ -36,10 +36,13 @@ public:
     /// 2^21 cells along each axis of the points' bounding box (keys pack 21 bits per axis).
     static bool fits(const Coordinates& c, double cell)
     {
-        if (!(cell > 0.0) || !std::isfinite(cell) || c.cols() == 0) return false;
+        // Quiet comparisons (`cell > 0.0` would raise FE_INVALID on NaN, a trap in Debug test
+        // builds), a normal side (its inverse is finite), and halves that cannot overflow.
+        if (!std::isgreaterequal(cell, std::numeric_limits<double>::min()) || !std::isfinite(cell) || c.cols() == 0)
+            return false;
         for (int d = 0; d < 3; ++d) {
-            const double extent = double(c.row(d).maxCoeff()) - double(c.row(d).minCoeff());
-            if (!(extent / cell < double(max_cells_per_axis - 1))) return false;
+            const double half_extent = 0.5 * double(c.row(d).maxCoeff()) - 0.5 * double(c.row(d).minCoeff());
+            if (!(half_extent / double(max_cells_per_axis - 1) < 0.5 * cell)) return false;
         }
         return true;
     }
@@ -101,13 +104,13 @@ public:
             // keeps every cell the ball meets (a cell too many costs a look-up, never a wrong answer).
             const double margin = 16.0 * double(std::numeric_limits<FT>::epsilon()) * (std::abs(q) + std::abs(m_lo[d]) + r) +
                                   1e-9 * m_cell;
-            // Clamped to the grid in double first: far queries would overflow the integers.
-            const double last = double(m_cells[d] - 1);
-            const double low = std::floor((q - r - margin - m_lo[d]) * m_inverse);
-            const double high = std::floor((q + r + margin - m_lo[d]) * m_inverse);
-            if (high < 0.0 || low > last) return true; // the ball misses the points' box
-            from[d] = low < 0.0 ? 0 : std::int64_t(low);
-            to[d] = high > last ? m_cells[d] - 1 : std::int64_t(high);
+            // The ball's extent from the grid's corner, compared with the grid's before it is
+            // divided into cells: a far query would overflow the division or the integers.
+            const double low = q - r - margin - m_lo[d], high = q + r + margin - m_lo[d];
+            const double span = double(m_cells[d]) * m_cell;
+            if (high < 0.0 || low >= span) return true; // the ball misses the points' box
+            from[d] = low <= 0.0 ? 0 : std::min<std::int64_t>(m_cells[d] - 1, std::int64_t(std::floor(low * m_inverse)));
+            to[d] = high >= span ? m_cells[d] - 1 : std::min<std::int64_t>(m_cells[d] - 1, std::int64_t(std::floor(high * m_inverse)));
             count *= to[d] - from[d] + 1;
             if (count > most_cells) return false;
         }
