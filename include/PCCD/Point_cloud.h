@@ -97,8 +97,7 @@ public:
     Point_cloud with_cell_grid(double cell) &&
     {
         std::shared_ptr<const Data> data = std::move(m_data);
-        Kd_tree<FT> tree = data.use_count() == 1 ? std::move(const_cast<Data&>(*data).tree) // not a const object
-                                                 : Kd_tree<FT>(data->tree.coordinates());
+        Kd_tree<FT> tree = taken_tree(data);
         tree.lay_cell_grid(cell);
         return Point_cloud(std::make_shared<Data>(std::move(tree), data->kernel));
     }
@@ -208,11 +207,15 @@ private:
         if (removed.size() >= data->tree.size())
             throw Invalid_input(internal::concat("point cloud: removing ", removed.size(), " of its ", data->tree.size(),
                                                  " points leaves none"));
-        if (data.use_count() == 1) {
-            Data& owned = const_cast<Data&>(*data); // not a const object (see Data)
-            return std::make_shared<Data>(std::move(owned.tree).without(removed), owned.kernel);
-        }
-        return std::make_shared<Data>(Kd_tree<FT>(data->tree.coordinates()).without(removed), data->kernel);
+        return std::make_shared<Data>(taken_tree(data).without(removed), data->kernel);
+    }
+
+    /// The kd-tree of `data`: moved out when `data` is its only holder, else built anew on a copy of
+    /// its coordinates (O(N log N)).
+    static Kd_tree<FT> taken_tree(const std::shared_ptr<const Data>& data)
+    {
+        if (data.use_count() == 1) return std::move(const_cast<Data&>(*data).tree); // not a const object (see Data)
+        return Kd_tree<FT>(data->tree.coordinates());
     }
 
     static Bbox_3 compute_bbox(const Coordinates& c)

@@ -32,7 +32,7 @@ public:
     /// declines.
     static constexpr std::int64_t most_cells = 27;
 
-    /// Whether a grid of side `cell` can be laid over `c`: `cell` finite and > 0, and fewer than
+    /// Whether a grid of side `cell` can be laid over `c`: `cell` finite and normal, and fewer than
     /// 2^21 cells along each axis of the points' bounding box (keys pack 21 bits per axis).
     static bool fits(const Coordinates& c, double cell)
     {
